@@ -1,0 +1,109 @@
+// Nishita et al. 1993, single scattering by nested ray marching: along the
+// view ray, VIEW_STEPS samples; at each, LIGHT_STEPS samples toward the sun
+// for its transmittance. Also composites the opaque surfaces behind the
+// atmosphere (aerial perspective) and the sun disk.
+#include "atmosphere/shaders/atmosphere_block.glsl"
+
+in vec2 v_ndc;
+layout(location = 0) out vec4 o_radiance;
+
+layout(binding = 0) uniform sampler2D u_depth;
+layout(binding = 1) uniform sampler2D u_surface;
+uniform vec3 u_camera;  // atmosphere space, metres
+uniform mat3 u_ray_from_ndc;
+uniform vec3 u_sun_dir;
+uniform float u_near;
+
+void main() {
+  Atmosphere atmosphere = block_atmosphere();
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  float depth = texelFetch(u_depth, pixel, 0).r;
+  vec3 surface = depth > 0.0 ? texelFetch(u_surface, pixel, 0).rgb : vec3(0.0);
+
+  vec3 ray = u_ray_from_ndc * vec3(v_ndc, 1.0);
+  float ray_scale = length(ray);
+  vec3 dir = ray / ray_scale;
+  // Reversed-Z with an infinite far plane: view depth = near / depth.
+  const float kFar = 3.0e38;
+  float t_surface = depth > 0.0 ? ray_scale * u_near / depth : kFar;
+
+  // A camera a hair below the bottom sphere (the ground mesh is an
+  // ellipsoid mapped onto it, up to float rounding) is lifted onto it.
+  vec3 camera = u_camera;
+  float r_camera = length(camera);
+  float r_min = atmosphere.bottom_radius + 1.0;
+  if (r_camera < r_min) camera *= r_min / r_camera;
+
+  vec3 radiance = vec3(0.0);
+  vec3 optical_depth = vec3(0.0);
+  float t_top_near, t_top_far;
+  bool in_atmosphere_ray = ray_sphere(camera, dir, atmosphere.top_radius, t_top_near, t_top_far) &&
+                           t_top_far > 0.0;
+  bool hits_ground = false;
+  if (in_atmosphere_ray) {
+    float t_start = max(t_top_near, 0.0);
+    float t_end = t_top_far;
+    float t_ground_near, t_ground_far;
+    if (ray_sphere(camera, dir, atmosphere.bottom_radius, t_ground_near, t_ground_far) &&
+        t_ground_near > 0.0) {
+      hits_ground = true;
+      t_end = min(t_end, t_ground_near);
+    }
+    t_end = min(t_end, t_surface);
+    // Rebase the march at the atmosphere's entry: from far away the
+    // camera's own coordinates have too few bits left for 10 m steps.
+    vec3 origin = camera + t_start * dir;
+    float segment = max(t_end - t_start, 0.0);
+    float nu = dot(dir, u_sun_dir);
+    float phase_r = rayleigh_phase(nu);
+    float phase_m = cornette_shanks_phase(atmosphere.mie_g, nu);
+    // From inside the atmosphere samples crowd near the camera (s = u^2),
+    // where the air is densest; from outside they are spread evenly.
+    bool inside = t_top_near <= 0.0;
+    for (int i = 0; i < VIEW_STEPS; ++i) {
+      float u = (float(i) + 0.5) / float(VIEW_STEPS);
+      float s = inside ? segment * u * u : segment * u;
+      float ds = inside ? segment * 2.0 * u / float(VIEW_STEPS) : segment / float(VIEW_STEPS);
+      vec3 p = origin + s * dir;
+      float r = length(p);
+      float altitude = r - atmosphere.bottom_radius;
+      vec3 extinction = extinction_at(atmosphere, altitude);
+      vec3 transmittance_to_camera = exp(-(optical_depth + 0.5 * extinction * ds));
+      optical_depth += extinction * ds;
+      float mu_s = dot(p, u_sun_dir) / r;
+      if (ray_intersects_ground(atmosphere, r, mu_s)) continue;  // in the planet's shadow
+      vec3 transmittance_to_sun = transmittance_to_top(atmosphere, r, mu_s, LIGHT_STEPS);
+      vec3 scattering =
+          atmosphere.rayleigh_scattering *
+              profile_density(atmosphere.rayleigh_density, altitude) * phase_r +
+          atmosphere.mie_scattering * profile_density(atmosphere.mie_density, altitude) * phase_m;
+      radiance += transmittance_to_camera * transmittance_to_sun * scattering * ds;
+    }
+    radiance *= atmosphere.solar_irradiance;
+  }
+  vec3 transmittance = exp(-optical_depth);
+  // Where the ray meets the bottom sphere but no surface was drawn (the
+  // mesh's flat facets sag below the true ellipsoid near the horizon), the
+  // sphere itself is the ground: Lambertian with the model's albedo.
+  if (depth == 0.0 && hits_ground) {
+    float t_ground_near, t_ground_far;
+    ray_sphere(camera, dir, atmosphere.bottom_radius, t_ground_near, t_ground_far);
+    vec3 p = camera + t_ground_near * dir;
+    float r = length(p);
+    float mu_s = dot(p, u_sun_dir) / r;
+    vec3 sun = mu_s > 0.0 ? transmittance_to_top(atmosphere, r, mu_s, LIGHT_STEPS) : vec3(0.0);
+    surface = atmosphere.ground_albedo / kPi * atmosphere.solar_irradiance * sun * max(mu_s, 0.0);
+  }
+  radiance += transmittance * surface;
+
+  // The sun disk, uniform radiance E / (pi alpha^2), on open sky only.
+  if (depth == 0.0 && !hits_ground) {
+    float cos_alpha = cos(atmosphere.sun_angular_radius);
+    if (dot(dir, u_sun_dir) > cos_alpha) {
+      float solid_angle = 2.0 * kPi * (1.0 - cos_alpha);
+      radiance += transmittance * atmosphere.solar_irradiance / solid_angle;
+    }
+  }
+  // Keep within half-float range for the HDR target.
+  o_radiance = vec4(min(radiance, vec3(6.0e4)), 1.0);
+}

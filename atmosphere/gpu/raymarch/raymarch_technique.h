@@ -1,0 +1,31 @@
+#pragma once
+// Nishita et al. 1993: per pixel, a ray march along the view ray with, at
+// every sample, a second march toward the sun; single scattering only. The
+// brute-force baseline every other technique is compared against for speed.
+#include "atmosphere/gpu/technique.h"
+#include "render/gl/program.h"
+#include "render/gl/texture.h"
+
+namespace planet {
+
+class RaymarchTechnique final : public AtmosphereTechnique {
+ public:
+  struct Steps {
+    int view = 32;
+    int light = 16;
+  };
+  explicit RaymarchTechnique(Steps steps);
+  RaymarchTechnique() : RaymarchTechnique(Steps{}) {}
+
+  std::string name() const override { return "raymarch"; }
+  void update(const AtmosphereModel& model) override;
+  void render(const SkyFrame& frame, GpuTimer& timer) override;
+
+ private:
+  Steps steps_;
+  Program program_;
+  Buffer block_;
+  VertexArray empty_vao_;
+};
+
+}  // namespace planet

@@ -1,0 +1,19 @@
+#include "atmosphere/gpu/technique.h"
+
+#include "atmosphere/gpu/raymarch/raymarch_technique.h"
+#include "sim/error.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+namespace planet {
+
+std::vector<std::string> technique_names() { return {"raymarch"}; }
+
+std::unique_ptr<AtmosphereTechnique> make_technique(const std::string& name) {
+  if (name == "raymarch") return std::make_unique<RaymarchTechnique>();
+  throw InputError(fmt::format("unknown atmosphere technique '{}' (available: {})", name,
+                               fmt::join(technique_names(), ", ")));
+}
+
+}  // namespace planet

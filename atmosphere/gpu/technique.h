@@ -1,0 +1,57 @@
+#pragma once
+// The one interface every GPU atmosphere technique implements (raymarch,
+// hillaire, bruneton, oneil). A frame calls update() when the model
+// changes, then render() to put sky, sun and aerial perspective over the
+// opaque surfaces; the comparisons loop over techniques through it.
+#include "atmosphere/model.h"
+
+#include <epoxy/gl.h>
+#include <glm/glm.hpp>
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace planet {
+
+struct PassTiming;
+class GpuTimer;
+
+// What a technique needs to know of a frame. "Atmosphere space" is the
+// body frame scaled so that the body's ellipsoid becomes the atmosphere's
+// bottom sphere (see atmosphere_space.h): the model stays spherical and
+// still hugs an oblate planet.
+struct SkyFrame {
+  int width = 0, height = 0;
+  glm::dvec3 camera_atmo{0.0};  // camera position in atmosphere space, metres
+  // Maps (ndc.x, ndc.y, 1) to the unnormalised atmosphere-space direction of
+  // the pixel, whose length is the atmosphere-space distance per unit of
+  // view depth.
+  glm::mat3 atmo_ray_from_ndc{1.0f};
+  glm::vec3 sun_dir_atmo{0, 0, 1};
+  float near = 0.1f;  // view depth at reversed-Z depth 1
+  // Inputs: reversed-Z depth (0 where nothing opaque was drawn) and the
+  // radiance leaving opaque surfaces toward the camera, before the
+  // atmosphere between them and the camera.
+  GLuint depth_texture = 0;
+  GLuint surface_texture = 0;
+  // Output: an RGBA16F/32F framebuffer of the final HDR radiance.
+  GLuint target_framebuffer = 0;
+};
+
+class AtmosphereTechnique {
+ public:
+  virtual ~AtmosphereTechnique() = default;
+  virtual std::string name() const = 0;
+  // Takes new parameters; cheap when nothing changed.
+  virtual void update(const AtmosphereModel& model) = 0;
+  // Sky, sun disk and aerial perspective over the surfaces into the target.
+  virtual void render(const SkyFrame& frame, GpuTimer& timer) = 0;
+};
+
+// Names accepted on the command line and in flight scripts.
+std::vector<std::string> technique_names();
+// Throws InputError for an unknown name. Needs a current GL context.
+std::unique_ptr<AtmosphereTechnique> make_technique(const std::string& name);
+
+}  // namespace planet

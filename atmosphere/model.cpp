@@ -1,0 +1,104 @@
+#include "atmosphere/model.h"
+
+#include <fmt/format.h>
+
+#include <glm/gtc/constants.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace planet {
+
+double DensityProfile::density(double altitude) const {
+  const DensityLayer& l = altitude < layers[0].width ? layers[0] : layers[1];
+  double d = l.exp_term * std::exp(l.exp_scale * altitude) + l.linear_term * altitude +
+             l.constant_term;
+  return std::clamp(d, 0.0, 1.0);
+}
+
+namespace {
+
+glm::dvec3 rgb(JsonObject& o, const std::string& key) {
+  auto v = o.numbers(key, 3, 0.0, 1.0);  // 1/m: even 50x Earth is far below 1
+  return {v[0], v[1], v[2]};
+}
+
+DensityProfile parse_density(JsonObject d, double thickness) {
+  DensityProfile p;
+  std::string type = d.string("type");
+  if (type == "exponential") {
+    double H = d.number("scale_height_m", 1.0, 1e7);
+    p.layers[1] = {0.0, 1.0, -1.0 / H, 0.0, 0.0};
+  } else if (type == "tent") {
+    // A triangle of height 1 centred at `center` with base `width`: two
+    // linear layers meeting at the centre.
+    double c = d.number("center_m", 0.0, thickness);
+    double w = d.number("width_m", 1.0, 2.0 * thickness);
+    double half = 0.5 * w;
+    p.layers[0] = {c, 0.0, 0.0, 1.0 / half, 1.0 - c / half};
+    p.layers[1] = {0.0, 0.0, 0.0, -1.0 / half, 1.0 + c / half};
+  } else if (type == "uniform") {
+    p.layers[1] = {0.0, 0.0, 0.0, 0.0, 1.0};
+  } else {
+    d.fail("type", fmt::format("'{}' is not a density profile (exponential, tent, uniform)", type));
+  }
+  d.finish();
+  return p;
+}
+
+AtmosphereComponent parse_component(JsonObject c, const std::string& name, PhaseKind phase,
+                                    double thickness) {
+  AtmosphereComponent out;
+  out.name = name;
+  out.phase = phase;
+  out.scattering = c.has("scattering") ? rgb(c, "scattering") : glm::dvec3(0.0);
+  out.absorption = c.has("absorption") ? rgb(c, "absorption") : glm::dvec3(0.0);
+  if (c.has("extinction")) {
+    // Mie data is often given as scattering and extinction; absorption is
+    // their difference and must not be negative.
+    glm::dvec3 extinction = rgb(c, "extinction");
+    glm::dvec3 absorption = extinction - out.scattering;
+    if (glm::any(glm::lessThan(absorption, glm::dvec3(-1e-15)))) {
+      c.fail("extinction", "must not be below scattering");
+    }
+    out.absorption = glm::max(absorption, glm::dvec3(0.0));
+  }
+  out.density = parse_density(c.object("density"), thickness);
+  c.finish();
+  return out;
+}
+
+}  // namespace
+
+AtmosphereModel parse_atmosphere(JsonObject a) {
+  AtmosphereModel m;
+  m.bottom_radius = a.number("bottom_radius_m", 1.0, 1e9);
+  m.top_radius = a.number("top_radius_m", 1.0, 1e9);
+  if (m.top_radius <= m.bottom_radius) {
+    a.fail("top_radius_m", fmt::format("{:g} must be above bottom_radius_m {:g}", m.top_radius,
+                                       m.bottom_radius));
+  }
+  double thickness = m.top_radius - m.bottom_radius;
+  if (a.has("wavelengths_nm")) {
+    auto w = a.numbers("wavelengths_nm", 3, 360.0, 830.0);
+    m.wavelengths_nm = {w[0], w[1], w[2]};
+  }
+  auto e = a.numbers("solar_irradiance", 3, 0.0, 1e6);
+  m.solar_irradiance = {e[0], e[1], e[2]};
+  m.sun_angular_radius = glm::radians(a.number("sun_angular_radius_deg", 1e-4, 10.0));
+  m.mie_g = a.number("mie_g", -0.999, 0.999);
+  m.ground_albedo = a.number("ground_albedo", 0.0, 1.0);
+  m.rayleigh = parse_component(a.object("rayleigh"), "rayleigh", PhaseKind::kRayleigh, thickness);
+  if (m.rayleigh.absorption != glm::dvec3(0.0)) {
+    // Molecules absorb through the separate absorber component (ozone).
+    a.fail("rayleigh", "absorption must be zero; give it as the absorber component");
+  }
+  m.mie = parse_component(a.object("mie"), "mie", PhaseKind::kMie, thickness);
+  if (a.has("absorber")) {
+    m.absorber = parse_component(a.object("absorber"), "absorber", PhaseKind::kNone, thickness);
+  }
+  a.finish();
+  return m;
+}
+
+}  // namespace planet

@@ -1,0 +1,121 @@
+#include "render/capture.h"
+
+#include "atmosphere/gpu/technique.h"
+#include "render/frame.h"
+#include "render/image_io.h"
+#include "sim/error.h"
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <glm/gtc/constants.hpp>
+
+#include <chrono>
+#include <algorithm>
+#include <cstdio>
+#include <unistd.h>
+
+namespace planet {
+
+namespace {
+
+nlohmann::json sidecar(const FlightScript& script, const Geodesy& geodesy, int frame, double t,
+                       const Camera& camera, double exposure, const FrameStats& stats) {
+  Geodetic g = geodesy.geodetic_from_body(camera.pos_body);
+  nlohmann::json passes = nlohmann::json::object();
+  for (const auto& p : stats.passes) passes[p.pass] = p.gpu_ms;
+  const glm::dquat& q = camera.body_from_camera;
+  return {
+      {"frame", frame},
+      {"time_s", t},
+      {"body", script.body.name},
+      {"camera",
+       {{"position_body_m", {camera.pos_body.x, camera.pos_body.y, camera.pos_body.z}},
+        {"lat_deg", glm::degrees(g.lat)},
+        {"lon_deg", glm::degrees(g.lon)},
+        {"height_m", g.height},
+        {"body_from_camera_wxyz", {q.w, q.x, q.y, q.z}},
+        {"vertical_fov_deg", glm::degrees(camera.vertical_fov)}}},
+      {"sun_dir_body", {script.sun_dir_body.x, script.sun_dir_body.y, script.sun_dir_body.z}},
+      {"technique", script.technique},
+      {"exposure", exposure},
+      {"image", {{"width", script.width}, {"height", script.height}}},
+      {"gpu_ms", passes},
+  };
+}
+
+// On a terminal, one line rewritten in place; in a log, a line per tenth.
+void report_progress(const std::string& name, int done, int total,
+                     std::chrono::steady_clock::time_point start) {
+  double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  double rate = done / std::max(elapsed, 1e-9);
+  double left = (total - done) / rate;
+  if (isatty(fileno(stderr))) {
+    std::fprintf(stderr, "\rcapture %s: frame %d/%d  %.1f frames/s  %.0f s left   ", name.c_str(),
+                 done, total, rate, left);
+    std::fflush(stderr);
+  } else if (done == total || (done * 10) / total != ((done - 1) * 10) / total) {
+    std::fprintf(stderr, "capture %s: frame %d/%d  %.1f frames/s  %.0f s left\n", name.c_str(),
+                 done, total, rate, left);
+  }
+}
+
+}  // namespace
+
+CaptureResult run_capture(const FlightScript& script, const CaptureOptions& options) {
+  const int total = script.frame_count();
+  const int first = options.first_frame;
+  const int end = options.end_frame < 0 ? total : options.end_frame;
+  if (first < 0 || first >= end || end > total) {
+    throw InputError(fmt::format("frames {}:{} are outside the flight's 0:{}", first, end, total));
+  }
+  std::filesystem::create_directories(options.out_dir);
+  const auto finished_marker = options.out_dir / "capture.json";
+  std::filesystem::remove(finished_marker);
+
+  std::optional<AtmosphereModel> atmosphere;
+  std::unique_ptr<AtmosphereTechnique> technique;
+  if (script.body.has_atmosphere()) {
+    atmosphere = parse_atmosphere(
+        JsonObject(script.body.atmosphere, script.body.file.string(), "atmosphere"));
+    technique = make_technique(script.technique);
+  }
+  FrameRenderer renderer(script.width, script.height);
+  renderer.set_body(script.body, atmosphere, std::move(technique));
+  FlightPath path(script);
+  Geodesy geodesy(script.body.shape);
+
+  CaptureResult result;
+  auto start = std::chrono::steady_clock::now();
+  for (int frame = first; frame < end; ++frame) {
+    double t = script.frame_time(frame);
+    Camera camera = path.camera_at(t);
+    double exposure = path.exposure_at(t);
+    FrameStats stats = renderer.render(camera, script.sun_dir_body, exposure);
+    std::string stem = fmt::format("frame_{:05d}", frame);
+    write_exr(options.out_dir / (stem + ".exr"), script.width, script.height, renderer.read_hdr());
+    write_png(options.out_dir / (stem + ".png"), script.width, script.height, renderer.read_ldr());
+    write_text_file(options.out_dir / (stem + ".json"),
+                    sidecar(script, geodesy, frame, t, camera, exposure, stats).dump(2) + "\n");
+    if (frame == first) result.first_png = options.out_dir / (stem + ".png");
+    result.last_png = options.out_dir / (stem + ".png");
+    ++result.frames;
+    if (options.progress) report_progress(script.name, frame + 1 - first, end - first, start);
+  }
+  result.wall_seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (options.progress && isatty(fileno(stderr))) std::fprintf(stderr, "\n");
+
+  nlohmann::json summary = {
+      {"flight", script.file.string()},
+      {"frames", {{"first", first}, {"end", end}, {"total_in_flight", total}}},
+      {"frame_rate", script.frame_rate},
+      {"image", {{"width", script.width}, {"height", script.height}}},
+      {"technique", script.technique},
+      {"wall_seconds", result.wall_seconds},
+  };
+  write_text_file(finished_marker, summary.dump(2) + "\n");
+  return result;
+}
+
+}  // namespace planet

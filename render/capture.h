@@ -1,0 +1,30 @@
+#pragma once
+// Headless capture of a scripted flight: frame i at t = start + i / rate,
+// each written as linear EXR, tone-mapped PNG and a JSON sidecar. The run
+// is reproducible: the same script gives the same bytes on the same
+// machine. capture.json, written last, marks a finished capture; it is
+// removed first, so a capture that stops half-way never looks finished.
+#include "sim/flight_script.h"
+
+#include <filesystem>
+#include <functional>
+
+namespace planet {
+
+struct CaptureOptions {
+  std::filesystem::path out_dir;
+  int first_frame = 0;
+  int end_frame = -1;  // one past the last; -1 means the flight's end
+  bool progress = true;
+};
+
+struct CaptureResult {
+  int frames = 0;
+  double wall_seconds = 0;
+  std::filesystem::path first_png, last_png;
+};
+
+// Needs a current GL context.
+CaptureResult run_capture(const FlightScript& script, const CaptureOptions& options);
+
+}  // namespace planet

@@ -1,0 +1,237 @@
+#include "render/frame.h"
+
+#include "atmosphere/atmosphere_space.h"
+#include "atmosphere/gpu/atmosphere_block.h"
+#include "render/gl/context.h"
+#include "sim/error.h"
+#include "terrain/ellipsoid_mesh.h"
+
+#include <glm/gtx/matrix_operation.hpp>
+
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cmath>
+
+namespace planet {
+
+namespace {
+
+// Patches per cube edge and quads per patch edge of the first planet mesh:
+// 6 x 8 x 8 patches of 16 x 16 quads, 98k triangles, ~60 km cells on Earth.
+constexpr int kPatchesPerEdge = 8;
+constexpr int kQuadsPerPatch = 16;
+
+// Airless bodies still need a surface colour; a dusty grey.
+constexpr float kAirlessAlbedo = 0.12f;
+
+struct PlanetVertex {
+  glm::vec3 offset;
+  glm::vec3 normal;
+};
+
+Framebuffer make_framebuffer(GLuint color, GLuint depth) {
+  GLuint fbo = 0;
+  glCreateFramebuffers(1, &fbo);
+  glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, color, 0);
+  if (depth) glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, depth, 0);
+  if (glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    glDeleteFramebuffers(1, &fbo);
+    throw SystemError("framebuffer incomplete");
+  }
+  return Framebuffer(fbo);
+}
+
+}  // namespace
+
+double FrameStats::total_gpu_ms() const {
+  double sum = 0;
+  for (const auto& p : passes) sum += p.gpu_ms;
+  return sum;
+}
+
+glm::mat4 clip_from_view_reversed_z(double vertical_fov, double aspect, double near) {
+  double f = 1.0 / std::tan(0.5 * vertical_fov);
+  glm::mat4 m(0.0f);
+  m[0][0] = float(f / aspect);
+  m[1][1] = float(f);
+  m[3][2] = float(near);  // z_clip = near
+  m[2][3] = -1.0f;        // w_clip = -z_view
+  return m;
+}
+
+FrameRenderer::FrameRenderer(int width, int height)
+    : width_(width),
+      height_(height),
+      depth_(make_texture_2d(GL_DEPTH_COMPONENT32F, width, height)),
+      surface_(make_texture_2d(GL_RGBA32F, width, height)),
+      hdr_(make_texture_2d(GL_RGBA32F, width, height)),
+      ldr_(make_texture_2d(GL_RGBA8, width, height)),
+      surface_fbo_(make_framebuffer(surface_.id(), depth_.id())),
+      hdr_fbo_(make_framebuffer(hdr_.id(), 0)),
+      ldr_fbo_(make_framebuffer(ldr_.id(), 0)),
+      planet_program_(Program::graphics("render/shaders/planet.vert", "render/shaders/planet.frag")),
+      tonemap_program_(
+          Program::graphics("render/shaders/fullscreen.vert", "render/shaders/tonemap.frag")),
+      atmosphere_block_(make_buffer(sizeof(AtmosphereBlock), nullptr)) {
+  AtmosphereBlock zero{};
+  glNamedBufferSubData(atmosphere_block_.id(), 0, sizeof(zero), &zero);
+  GLuint vao = 0;
+  glCreateVertexArrays(1, &vao);
+  empty_vao_ = VertexArray(vao);
+  check_gl_errors("FrameRenderer setup");
+}
+
+FrameRenderer::~FrameRenderer() = default;
+
+void FrameRenderer::set_body(const Body& body, std::optional<AtmosphereModel> atmosphere,
+                             std::unique_ptr<AtmosphereTechnique> technique) {
+  body_ = body;
+  atmosphere_ = std::move(atmosphere);
+  technique_ = std::move(technique);
+
+  PatchMesh mesh = make_ellipsoid_mesh(body.shape, kPatchesPerEdge, kQuadsPerPatch);
+  std::vector<PlanetVertex> vertices;
+  patch_centers_.clear();
+  for (const MeshPatch& patch : mesh.patches) {
+    patch_centers_.push_back(patch.center_body);
+    for (size_t i = 0; i < patch.offsets.size(); ++i) {
+      vertices.push_back({patch.offsets[i], patch.normals[i]});
+    }
+  }
+  patch_vertex_count_ = GLsizei(mesh.patches.front().offsets.size());
+  patch_index_count_ = GLsizei(mesh.indices.size());
+  planet_vertices_ = make_buffer(vertices.size() * sizeof(PlanetVertex), vertices.data(), 0);
+  planet_indices_ = make_buffer(mesh.indices.size() * sizeof(uint32_t), mesh.indices.data(), 0);
+
+  GLuint vao = 0;
+  glCreateVertexArrays(1, &vao);
+  glVertexArrayVertexBuffer(vao, 0, planet_vertices_.id(), 0, sizeof(PlanetVertex));
+  glVertexArrayElementBuffer(vao, planet_indices_.id());
+  glEnableVertexArrayAttrib(vao, 0);
+  glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, offsetof(PlanetVertex, offset));
+  glVertexArrayAttribBinding(vao, 0, 0);
+  glEnableVertexArrayAttrib(vao, 1);
+  glVertexArrayAttribFormat(vao, 1, 3, GL_FLOAT, GL_FALSE, offsetof(PlanetVertex, normal));
+  glVertexArrayAttribBinding(vao, 1, 0);
+  planet_vao_ = VertexArray(vao);
+
+  if (atmosphere_) {
+    AtmosphereBlock block = make_atmosphere_block(*atmosphere_);
+    glNamedBufferSubData(atmosphere_block_.id(), 0, sizeof(block), &block);
+    if (technique_) technique_->update(*atmosphere_);
+  }
+  check_gl_errors("FrameRenderer::set_body");
+}
+
+void FrameRenderer::draw_surfaces(const Camera& camera, const glm::dvec3& sun_dir_body) {
+  glBindFramebuffer(GL_FRAMEBUFFER, surface_fbo_.id());
+  glViewport(0, 0, width_, height_);
+  const float black[4] = {0, 0, 0, 0};
+  const float far_depth = 0.0f;
+  glClearNamedFramebufferfv(surface_fbo_.id(), GL_COLOR, 0, black);
+  glClearNamedFramebufferfv(surface_fbo_.id(), GL_DEPTH, 0, &far_depth);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_GREATER);
+  glEnable(GL_CULL_FACE);
+  glCullFace(GL_BACK);
+
+  glm::dmat3 view_from_body = glm::mat3_cast(glm::conjugate(camera.body_from_camera));
+  glm::mat4 clip_from_view = clip_from_view_reversed_z(
+      camera.vertical_fov, double(width_) / double(height_), camera.near);
+
+  planet_program_.use();
+  glUniformMatrix3fv(planet_program_.uniform("u_view_from_body"), 1, GL_FALSE,
+                     glm::value_ptr(glm::mat3(view_from_body)));
+  glUniformMatrix4fv(planet_program_.uniform("u_clip_from_view"), 1, GL_FALSE,
+                     glm::value_ptr(clip_from_view));
+  glUniform3fv(planet_program_.uniform("u_sun_dir_body"), 1,
+               glm::value_ptr(glm::vec3(sun_dir_body)));
+  glUniform1i(planet_program_.uniform("u_has_atmosphere"), atmosphere_ ? 1 : 0);
+  if (atmosphere_) {
+    glm::dvec3 scale = atmosphere_scale(body_.shape, atmosphere_->bottom_radius);
+    glUniform3fv(planet_program_.uniform("u_atmo_scale"), 1, glm::value_ptr(glm::vec3(scale)));
+    glUniform3fv(planet_program_.uniform("u_camera_atmo"), 1,
+                 glm::value_ptr(glm::vec3(scale * camera.pos_body)));
+    glUniform3fv(planet_program_.uniform("u_sun_dir_atmo"), 1,
+                 glm::value_ptr(glm::vec3(glm::normalize(scale * sun_dir_body))));
+    glUniform1f(planet_program_.uniform("u_albedo"), float(atmosphere_->ground_albedo));
+  } else {
+    glUniform1f(planet_program_.uniform("u_albedo"), kAirlessAlbedo);
+  }
+  // Bound even for an airless body (then all zero): the block is declared.
+  glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, atmosphere_block_.id());
+  glBindVertexArray(planet_vao_.id());
+  GLint center_location = planet_program_.uniform("u_center_rel_eye");
+  for (size_t i = 0; i < patch_centers_.size(); ++i) {
+    // The one place a body-frame position meets the camera: in double.
+    glm::vec3 center_rel_eye(patch_centers_[i] - camera.pos_body);
+    glUniform3fv(center_location, 1, glm::value_ptr(center_rel_eye));
+    glDrawElementsBaseVertex(GL_TRIANGLES, patch_index_count_, GL_UNSIGNED_INT, nullptr,
+                             GLint(i) * patch_vertex_count_);
+  }
+  glDisable(GL_CULL_FACE);
+  glDisable(GL_DEPTH_TEST);
+}
+
+FrameStats FrameRenderer::render(const Camera& camera, const glm::dvec3& sun_dir_body,
+                                 double exposure) {
+  timer_.begin("surface");
+  draw_surfaces(camera, sun_dir_body);
+  timer_.end();
+
+  if (atmosphere_ && technique_) {
+    glm::dvec3 scale = atmosphere_scale(body_.shape, atmosphere_->bottom_radius);
+    SkyFrame sky;
+    sky.width = width_;
+    sky.height = height_;
+    sky.camera_atmo = scale * camera.pos_body;
+    double tan_half = std::tan(0.5 * camera.vertical_fov);
+    double aspect = double(width_) / double(height_);
+    // ndc (x, y, 1) -> view ray (x tan aspect, y tan, -1) -> body -> atmosphere.
+    glm::dmat3 view_ray_from_ndc(glm::dvec3(tan_half * aspect, 0, 0), glm::dvec3(0, tan_half, 0),
+                                 glm::dvec3(0, 0, -1));
+    glm::dmat3 body_from_view = glm::mat3_cast(camera.body_from_camera);
+    sky.atmo_ray_from_ndc =
+        glm::mat3(glm::dmat3(glm::diagonal3x3(scale)) * body_from_view * view_ray_from_ndc);
+    sky.sun_dir_atmo = glm::vec3(glm::normalize(scale * sun_dir_body));
+    sky.near = float(camera.near);
+    sky.depth_texture = depth_.id();
+    sky.surface_texture = surface_.id();
+    sky.target_framebuffer = hdr_fbo_.id();
+    technique_->render(sky, timer_);
+  } else {
+    // Airless: the surfaces are the image.
+    timer_.begin("copy");
+    glBlitNamedFramebuffer(surface_fbo_.id(), hdr_fbo_.id(), 0, 0, width_, height_, 0, 0, width_,
+                           height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    timer_.end();
+  }
+
+  timer_.begin("tonemap");
+  glBindFramebuffer(GL_FRAMEBUFFER, ldr_fbo_.id());
+  glViewport(0, 0, width_, height_);
+  tonemap_program_.use();
+  glBindTextureUnit(0, hdr_.id());
+  glUniform1f(tonemap_program_.uniform("u_exposure"), float(exposure));
+  glBindVertexArray(empty_vao_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  timer_.end();
+
+  FrameStats stats;
+  stats.passes = timer_.collect();
+  check_gl_errors("FrameRenderer::render");
+  return stats;
+}
+
+std::vector<float> FrameRenderer::read_hdr() const {
+  return read_texture_rgba32f(hdr_.id(), width_, height_);
+}
+
+std::vector<uint8_t> FrameRenderer::read_ldr() const {
+  std::vector<uint8_t> pixels(size_t(width_) * size_t(height_) * 4);
+  glGetTextureImage(ldr_.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(pixels.size()),
+                    pixels.data());
+  return pixels;
+}
+
+}  // namespace planet

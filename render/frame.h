@@ -1,0 +1,71 @@
+#pragma once
+// One frame of the planet: opaque surfaces into an HDR target with depth,
+// then the atmosphere technique over them, then exposure and tone mapping
+// into an 8-bit target. Everything it draws is placed relative to the
+// camera: body-frame positions in double never reach the GPU.
+#include "atmosphere/gpu/technique.h"
+#include "atmosphere/model.h"
+#include "render/gl/program.h"
+#include "render/gl/texture.h"
+#include "render/gl/timer.h"
+#include "sim/body.h"
+#include "sim/camera.h"
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace planet {
+
+struct FrameStats {
+  std::vector<PassTiming> passes;  // GPU time per pass
+  double total_gpu_ms() const;
+};
+
+// Perspective with reversed Z and an infinite far plane: depth = near / view
+// depth, so 1 at the near plane and 0 at infinity (Upchurch and Desbrun
+// 2012; Reed 2015 on why float depth wants it this way round).
+glm::mat4 clip_from_view_reversed_z(double vertical_fov, double aspect, double near);
+
+class FrameRenderer {
+ public:
+  // Needs a current GL 4.5 context.
+  FrameRenderer(int width, int height);
+  ~FrameRenderer();
+
+  // The body to draw, with its atmosphere (none for an airless body) drawn
+  // by `technique`.
+  void set_body(const Body& body, std::optional<AtmosphereModel> atmosphere,
+                std::unique_ptr<AtmosphereTechnique> technique);
+
+  FrameStats render(const Camera& camera, const glm::dvec3& sun_dir_body, double exposure);
+
+  int width() const { return width_; }
+  int height() const { return height_; }
+  // Linear HDR radiance, RGBA float, rows bottom-up as GL stores them.
+  std::vector<float> read_hdr() const;
+  // Tone-mapped sRGB, RGBA8, rows bottom-up.
+  std::vector<uint8_t> read_ldr() const;
+  GLuint ldr_texture() const { return ldr_.id(); }
+
+ private:
+  void draw_surfaces(const Camera& camera, const glm::dvec3& sun_dir_body);
+
+  int width_, height_;
+  Texture depth_, surface_, hdr_, ldr_;
+  Framebuffer surface_fbo_, hdr_fbo_, ldr_fbo_;
+  Program planet_program_, tonemap_program_;
+  Buffer atmosphere_block_;
+  VertexArray planet_vao_, empty_vao_;
+  Buffer planet_vertices_, planet_indices_;
+  std::vector<glm::dvec3> patch_centers_;
+  GLsizei patch_vertex_count_ = 0, patch_index_count_ = 0;
+
+  Body body_;
+  std::optional<AtmosphereModel> atmosphere_;
+  std::unique_ptr<AtmosphereTechnique> technique_;
+  GpuTimer timer_;
+};
+
+}  // namespace planet

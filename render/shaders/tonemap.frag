@@ -1,0 +1,19 @@
+// Exposure, then Narkowicz's 2015 fit of the ACES filmic curve, then the
+// sRGB transfer function into an 8-bit target.
+in vec2 v_ndc;
+layout(location = 0) out vec4 o_color;
+layout(binding = 0) uniform sampler2D u_hdr;
+uniform float u_exposure;
+
+vec3 aces_fit(vec3 x) {
+  return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
+}
+
+vec3 srgb_encode(vec3 c) {
+  return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));
+}
+
+void main() {
+  vec3 hdr = texelFetch(u_hdr, ivec2(gl_FragCoord.xy), 0).rgb;
+  o_color = vec4(srgb_encode(aces_fit(hdr * u_exposure)), 1.0);
+}

@@ -1,0 +1,40 @@
+#include "sim/body.h"
+
+#include "sim/data_paths.h"
+#include "sim/error.h"
+
+#include <fmt/format.h>
+
+namespace planet {
+
+Body load_body(const std::filesystem::path& file) {
+  JsonObject root = JsonObject::load(file);
+  Body body;
+  body.file = file;
+  body.name = root.string("name");
+  if (body.name.empty()) root.fail("name", "must not be empty");
+
+  JsonObject shape = root.object("shape");
+  std::string type = shape.string("type");
+  if (type != "ellipsoid") shape.fail("type", fmt::format("'{}' is not a known shape (ellipsoid)", type));
+  body.shape.equatorial_radius = shape.number("equatorial_radius_m", 1.0, 1e9);
+  // Flattening below 0 would be a prolate body, which GeographicLib allows
+  // but nothing here expects; 0.5 is already a very squashed body.
+  body.shape.flattening = shape.number_or("flattening", 0.0, 0.0, 0.5);
+  shape.finish();
+
+  if (root.has("atmosphere")) body.atmosphere = root.raw("atmosphere");
+  root.finish();
+  return body;
+}
+
+std::filesystem::path find_body_file(const std::string& name_or_path) {
+  std::filesystem::path p(name_or_path);
+  if (std::filesystem::exists(p)) return p;
+  std::filesystem::path shipped = data_dir() / "planets" / (name_or_path + ".json");
+  if (std::filesystem::exists(shipped)) return shipped;
+  throw InputError(fmt::format("{}: no such body file, and no body of that name in {}",
+                               name_or_path, (data_dir() / "planets").string()));
+}
+
+}  // namespace planet

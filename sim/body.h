@@ -1,0 +1,38 @@
+#pragma once
+// A celestial body as the simulation sees it: its name, its shape and the
+// parts of its file that other modules read (the atmosphere).
+#include "sim/json_reader.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <string>
+
+namespace planet {
+
+// An oblate ellipsoid of revolution about the body's z axis.
+struct Ellipsoid {
+  double equatorial_radius = 0;  // a, metres
+  double flattening = 0;         // f = (a - b) / a
+  double polar_radius() const { return equatorial_radius * (1.0 - flattening); }
+};
+
+struct Body {
+  std::string name;
+  std::filesystem::path file;
+  Ellipsoid shape;
+  // The "atmosphere" object of the body's file, parsed by the atmosphere
+  // module; null for an airless body.
+  nlohmann::json atmosphere;
+
+  bool has_atmosphere() const { return !atmosphere.is_null(); }
+};
+
+// Reads data/planets/<name>.json or any body file.
+Body load_body(const std::filesystem::path& file);
+
+// Finds a body file: an existing path is taken as it is, otherwise a bare
+// name ("earth") is looked up in the shipped data/planets folder.
+std::filesystem::path find_body_file(const std::string& name_or_path);
+
+}  // namespace planet

@@ -1,0 +1,63 @@
+#pragma once
+// A scripted flight: a body, keyframes of geodetic position and attitude in
+// time, a sun, and how to capture it. Sampling is a pure function of time,
+// and capture samples at fixed steps of 1/frame_rate, so every run of a
+// script yields the same cameras.
+#include "sim/body.h"
+#include "sim/camera.h"
+#include "sim/geodesy.h"
+#include "sim/interpolation.h"
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace planet {
+
+struct Keyframe {
+  double time = 0;  // seconds from the start of the flight
+  Geodetic place;
+  double heading = 0, pitch = 0, roll = 0;  // radians, see enu_from_camera
+  double exposure = 1;  // the script's unless the keyframe gives its own
+};
+
+struct FlightScript {
+  std::filesystem::path file;
+  std::string name;  // the file's stem, used to name captures
+  Body body;
+  std::vector<Keyframe> keyframes;
+  double vertical_fov = glm::radians(60.0);
+  // The sun's direction, fixed in the body frame for the whole flight, given
+  // in the file as elevation and azimuth at the first keyframe's place.
+  glm::dvec3 sun_dir_body{0, 0, 1};
+  double sun_elevation = 0, sun_azimuth = 0;  // radians, as given
+  int width = 0, height = 0;
+  double frame_rate = 0;
+  double exposure = 1;  // multiplies radiance before tone mapping; the default for keyframes
+  std::string technique = "raymarch";
+
+  double duration() const { return keyframes.back().time - keyframes.front().time; }
+  // Frames at t = start + i / frame_rate for every such time in the flight.
+  int frame_count() const;
+  double frame_time(int frame) const;
+};
+
+FlightScript load_flight_script(const std::filesystem::path& file);
+
+// Samples a flight at any time: positions and angles on monotone cubics
+// through the keyframes.
+class FlightPath {
+ public:
+  explicit FlightPath(const FlightScript& script);
+  Camera camera_at(double time) const;
+  Geodetic place_at(double time) const;
+  // Interpolated in log space, so a 10x change takes as long up as down.
+  double exposure_at(double time) const;
+
+ private:
+  const FlightScript* script_;
+  Geodesy geodesy_;
+  MonotoneCubic lat_, lon_, height_, heading_, pitch_, roll_, log_exposure_;
+};
+
+}  // namespace planet

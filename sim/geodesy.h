@@ -1,0 +1,50 @@
+#pragma once
+// Geodetic coordinates on a body's ellipsoid, and the frames that hang off
+// them. Positions in the body-fixed frame are in double, always.
+#include "sim/body.h"
+
+#include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
+
+#include <memory>
+
+namespace GeographicLib {
+class Geocentric;
+}
+
+namespace planet {
+
+struct Geodetic {
+  double lat = 0;     // geodetic latitude, radians
+  double lon = 0;     // longitude, radians
+  double height = 0;  // above the ellipsoid, metres
+};
+
+class Geodesy {
+ public:
+  explicit Geodesy(const Ellipsoid& shape);
+  ~Geodesy();
+  Geodesy(Geodesy&&) noexcept;
+  Geodesy& operator=(Geodesy&&) noexcept;
+
+  glm::dvec3 body_from_geodetic(const Geodetic& g) const;
+  Geodetic geodetic_from_body(const glm::dvec3& pos_body) const;
+
+  // Columns are east, north and up at the given place, in the body frame.
+  glm::dmat3 body_from_enu(const Geodetic& g) const;
+
+  const Ellipsoid& shape() const { return shape_; }
+
+ private:
+  Ellipsoid shape_;
+  std::unique_ptr<GeographicLib::Geocentric> geocentric_;
+};
+
+// Camera attitude from heading (clockwise from north), pitch (up positive)
+// and roll (right wing down positive), all radians, relative to the local
+// east-north-up frame. The camera looks along its -z, with +y up and +x
+// right, as OpenGL's view space does. The returned rotation maps camera
+// axes into ENU axes.
+glm::dquat enu_from_camera(double heading, double pitch, double roll);
+
+}  // namespace planet

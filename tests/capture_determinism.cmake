@@ -1,0 +1,26 @@
+# Runs `planet capture` twice on the same script and requires byte-identical
+# PNG and EXR frames; also checks that a finished capture has its marker.
+file(REMOVE_RECURSE "${WORK}")
+foreach(run a b)
+  execute_process(COMMAND "${PLANET}" capture --flight "${FLIGHT}" --out "${WORK}/${run}" --quiet
+                  RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "planet capture failed (${rc})")
+  endif()
+  if(NOT EXISTS "${WORK}/${run}/capture.json")
+    message(FATAL_ERROR "finished capture has no capture.json")
+  endif()
+endforeach()
+file(GLOB frames RELATIVE "${WORK}/a" "${WORK}/a/*.png" "${WORK}/a/*.exr")
+list(LENGTH frames count)
+if(count LESS 6)
+  message(FATAL_ERROR "expected 3 PNG + 3 EXR frames, found ${count}: ${frames}")
+endif()
+foreach(f ${frames})
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files "${WORK}/a/${f}" "${WORK}/b/${f}"
+                  RESULT_VARIABLE differ)
+  if(differ)
+    message(FATAL_ERROR "${f} differs between two runs of the same script")
+  endif()
+endforeach()
+message(STATUS "${count} frames byte-identical across two runs")

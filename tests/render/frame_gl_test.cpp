@@ -1,0 +1,121 @@
+// Frames rendered headless and checked for what a person must see in them.
+#include "render/frame.h"
+
+#include "render/gl/context.h"
+#include "sim/data_paths.h"
+#include "sim/geodesy.h"
+
+#include <gtest/gtest.h>
+#include <glm/gtc/constants.hpp>
+
+namespace planet {
+namespace {
+
+class FrameGLTest : public ::testing::Test {
+ protected:
+  static constexpr int kSize = 64;
+
+  void SetUp() override {
+    context_ = GlContext::create_headless();
+    body_ = load_body(data_dir() / "planets" / "earth.json");
+    AtmosphereModel model =
+        parse_atmosphere(JsonObject(body_.atmosphere, body_.file.string(), "atmosphere"));
+    renderer_ = std::make_unique<FrameRenderer>(kSize, kSize);
+    renderer_->set_body(body_, model, make_technique("raymarch"));
+  }
+
+  // Renders from a place and attitude; the sun at an elevation and azimuth
+  // seen from `sun_place`.
+  std::vector<float> render(const Geodetic& place, double heading_deg, double pitch_deg,
+                            double fov_deg, double sun_elevation_deg, double sun_azimuth_deg) {
+    Geodesy geodesy(body_.shape);
+    Camera camera;
+    camera.pos_body = geodesy.body_from_geodetic(place);
+    camera.body_from_camera =
+        glm::quat_cast(geodesy.body_from_enu(place)) *
+        enu_from_camera(glm::radians(heading_deg), glm::radians(pitch_deg), 0.0);
+    camera.vertical_fov = glm::radians(fov_deg);
+    double e = glm::radians(sun_elevation_deg), a = glm::radians(sun_azimuth_deg);
+    glm::dvec3 sun_enu(std::cos(e) * std::sin(a), std::cos(e) * std::cos(a), std::sin(e));
+    glm::dvec3 sun = geodesy.body_from_enu(place) * sun_enu;
+    renderer_->render(camera, sun, 10.0);
+    return renderer_->read_hdr();
+  }
+
+  // Pixel (x, y) with y counted from the top of the image.
+  static glm::vec3 at(const std::vector<float>& hdr, int x, int y_from_top) {
+    size_t i = (size_t(kSize - 1 - y_from_top) * kSize + size_t(x)) * 4;
+    return {hdr[i], hdr[i + 1], hdr[i + 2]};
+  }
+  static float luminance(glm::vec3 c) { return 0.2126f * c.r + 0.7152f * c.g + 0.0722f * c.b; }
+
+  std::unique_ptr<GlContext> context_;
+  Body body_;
+  std::unique_ptr<FrameRenderer> renderer_;
+};
+
+TEST_F(FrameGLTest, GroundDaySkyIsBlueAtZenithAndBrighterAtHorizon) {
+  // Looking north and level, 90 degree field: the top row is 45 degrees up,
+  // the middle is the horizon. Sun 40 degrees up behind the camera.
+  auto hdr = render({glm::radians(46.5), glm::radians(8.0), 2.0}, 0.0, 0.0, 90.0, 40.0, 180.0);
+  glm::vec3 high = at(hdr, kSize / 2, 0);
+  glm::vec3 horizon = at(hdr, kSize / 2, kSize / 2 - 2);
+  EXPECT_GT(high.b, 1.3f * high.r) << "sky 45 degrees up must be blue";
+  EXPECT_GT(luminance(horizon), 1.2f * luminance(high)) << "horizon brighter than the sky above";
+  // Below the horizon: the lit ground, darker than the sky but not black.
+  glm::vec3 ground = at(hdr, kSize / 2, kSize - 1);
+  EXPECT_GT(luminance(ground), 0.0f);
+  // Straight up: blue.
+  auto zenith = render({glm::radians(46.5), glm::radians(8.0), 2.0}, 0.0, 89.0, 10.0, 40.0, 180.0);
+  glm::vec3 z = at(zenith, kSize / 2, kSize / 2);
+  EXPECT_GT(z.b, z.g);
+  EXPECT_GT(z.g, z.r);
+  for (float v : zenith) ASSERT_TRUE(std::isfinite(v));
+}
+
+TEST_F(FrameGLTest, OrbitShowsBlackSpaceAndALitBlueLimb) {
+  // 400 km up, looking 20 degrees down, which puts the horizon (19.7
+  // degrees below level from that height) near the middle of the image.
+  auto hdr = render({0.0, 0.0, 400e3}, 90.0, -20.0, 60.0, 30.0, 90.0);
+  // Space: the top corners are black.
+  EXPECT_LT(luminance(at(hdr, 0, 0)), 1e-6f);
+  EXPECT_LT(luminance(at(hdr, kSize - 1, 0)), 1e-6f);
+  // The planet fills the bottom and is lit.
+  EXPECT_GT(luminance(at(hdr, kSize / 2, kSize - 1)), 1e-3f);
+  // Down the middle column, the first bright pixel from the top is the limb
+  // of the atmosphere: bluer than red.
+  int limb = -1;
+  for (int y = 0; y < kSize; ++y) {
+    if (luminance(at(hdr, kSize / 2, y)) > 1e-3f) {
+      limb = y;
+      break;
+    }
+  }
+  ASSERT_GT(limb, 4) << "limb must be below the top of the image";
+  ASSERT_LT(limb, kSize - 4) << "limb must be above the bottom of the image";
+  glm::vec3 c = at(hdr, kSize / 2, limb);
+  EXPECT_GT(c.b, c.r) << "the thin atmosphere at the limb is blue";
+}
+
+TEST_F(FrameGLTest, NightSideIsDarkFromOrbit) {
+  // Sun 30 degrees below the horizon: the ground below is in the planet's shadow.
+  auto hdr = render({0.0, 0.0, 400e3}, 90.0, -60.0, 40.0, -30.0, 90.0);
+  EXPECT_LT(luminance(at(hdr, kSize / 2, kSize - 1)), 1e-5f);
+}
+
+TEST(ProjectionTest, ReversedZInfiniteFarPlane) {
+  glm::mat4 m = clip_from_view_reversed_z(glm::radians(60.0), 2.0, 0.1);
+  auto depth = [&](float z) {
+    glm::vec4 c = m * glm::vec4(0, 0, -z, 1);
+    return c.z / c.w;
+  };
+  EXPECT_FLOAT_EQ(depth(0.1f), 1.0f);
+  EXPECT_NEAR(depth(1e9f), 1e-10f, 1e-12f);
+  EXPECT_GT(depth(1e9f), 0.0f);
+  // Float depth keeps ~7 digits anywhere: 0.1 m and 1e9 m both resolve.
+  EXPECT_NE(depth(1.0f), depth(1.0001f));
+  EXPECT_NE(depth(1e8f), depth(1.0001e8f));
+}
+
+}  // namespace
+}  // namespace planet
