@@ -4,6 +4,7 @@
 // benchmarks, where the numbers are the point.
 #include <epoxy/gl.h>
 
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -29,8 +30,13 @@ class GpuTimer {
   std::vector<PassTiming> collect();
 
  private:
+  struct Pending {
+    std::string pass;
+    GLuint query;
+    std::chrono::steady_clock::time_point begun;
+  };
   std::vector<GLuint> free_;
-  std::vector<std::pair<std::string, GLuint>> pending_;
+  std::vector<Pending> pending_;
 };
 
 }  // namespace planet

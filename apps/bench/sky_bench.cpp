@@ -1,0 +1,40 @@
+// Sky techniques at 1280x720 on the Earth ground view, GPU time per frame
+// from timer queries (manual time), so that ratios between techniques are
+// measured in one run.
+#include "atmosphere/gpu/technique.h"
+#include "render/frame.h"
+#include "render/gl/context.h"
+#include "sim/data_paths.h"
+#include "sim/geodesy.h"
+
+#include <benchmark/benchmark.h>
+#include <glm/gtc/constants.hpp>
+
+namespace planet {
+namespace {
+
+void BM_SkyGround(benchmark::State& state, const char* technique) {
+  auto context = GlContext::create_headless();
+  Body body = load_body(data_dir() / "planets" / "earth.json");
+  AtmosphereModel model =
+      parse_atmosphere(JsonObject(body.atmosphere, body.file.string(), "atmosphere"));
+  FrameRenderer renderer(1280, 720);
+  renderer.set_body(body, model, make_technique(technique));
+  Geodesy geodesy(body.shape);
+  Geodetic place{glm::radians(46.5), glm::radians(8.0), 2.0};
+  Camera camera;
+  camera.pos_body = geodesy.body_from_geodetic(place);
+  camera.body_from_camera = glm::quat_cast(geodesy.body_from_enu(place)) *
+                            enu_from_camera(0.0, glm::radians(10.0), 0.0);
+  glm::dvec3 sun = geodesy.body_from_enu(place) * glm::normalize(glm::dvec3(0.3, 0.5, 0.6));
+  // The first frame pays for llvmpipe's shader compilation; not timed.
+  renderer.render(camera, sun, 10.0);
+  for (auto _ : state) {
+    FrameStats stats = renderer.render(camera, sun, 10.0);
+    state.SetIterationTime(stats.total_gpu_ms() * 1e-3);
+  }
+}
+BENCHMARK_CAPTURE(BM_SkyGround, raymarch, "raymarch")->UseManualTime()->Unit(benchmark::kMillisecond);
+
+}  // namespace
+}  // namespace planet

@@ -1,0 +1,82 @@
+// planet capture: a scripted flight rendered headless into EXR + PNG frames.
+#include "apps/commands.h"
+#include "render/capture.h"
+#include "render/gl/context.h"
+#include "sim/error.h"
+#include "sim/flight_script.h"
+
+#include <fmt/format.h>
+
+#include <cstdio>
+#include <memory>
+#include <string>
+
+namespace planet::apps {
+
+namespace {
+
+struct CaptureArgs {
+  std::string flight_file, out_dir, frames;
+  bool quiet = false;
+};
+
+// "A:B" (B exclusive), "A:" or ":B".
+std::pair<int, int> parse_frame_range(const std::string& text) {
+  auto colon = text.find(':');
+  if (colon == std::string::npos) {
+    throw InputError(fmt::format("--frames '{}': expected A:B (B exclusive)", text));
+  }
+  auto parse = [&](const std::string& s, int fallback) {
+    if (s.empty()) return fallback;
+    size_t used = 0;
+    int v = -1;
+    try {
+      v = std::stoi(s, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (used != s.size() || v < 0) {
+      throw InputError(fmt::format("--frames '{}': '{}' is not a frame number", text, s));
+    }
+    return v;
+  };
+  return {parse(text.substr(0, colon), 0), parse(text.substr(colon + 1), -1)};
+}
+
+void run(const CaptureArgs& args) {
+  FlightScript script = load_flight_script(args.flight_file);
+  CaptureOptions options;
+  options.out_dir = args.out_dir.empty() ? std::filesystem::path("out") / script.name
+                                         : std::filesystem::path(args.out_dir);
+  if (!args.frames.empty()) {
+    std::tie(options.first_frame, options.end_frame) = parse_frame_range(args.frames);
+  }
+  options.progress = !args.quiet;
+  auto context = GlContext::create_headless();
+  if (!args.quiet) {
+    std::fprintf(stderr, "planet: %s, %dx%d, %d frames at %g fps, %s sky on %s\n",
+                 script.body.name.c_str(), script.width, script.height, script.frame_count(),
+                 script.frame_rate, script.technique.c_str(), context->renderer().c_str());
+  }
+  CaptureResult result = run_capture(script, options);
+  std::printf("captured %d frames in %.1f s into %s (first %s, last %s)\n", result.frames,
+              result.wall_seconds, options.out_dir.string().c_str(),
+              result.first_png.filename().string().c_str(),
+              result.last_png.filename().string().c_str());
+}
+
+}  // namespace
+
+void add_capture_command(CLI::App& app) {
+  auto args = std::make_shared<CaptureArgs>();
+  CLI::App* cmd =
+      app.add_subcommand("capture", "Render a scripted flight headless into EXR + PNG frames");
+  cmd->add_option("--flight", args->flight_file, "Flight script (data/flights/*.json)")
+      ->required();
+  cmd->add_option("--out", args->out_dir, "Output folder (default out/<flight name>)");
+  cmd->add_option("--frames", args->frames, "Slice of frames A:B to render (B exclusive)");
+  cmd->add_flag("--quiet", args->quiet, "No progress output");
+  cmd->callback([args] { run(*args); });
+}
+
+}  // namespace planet::apps

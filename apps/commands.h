@@ -1,0 +1,16 @@
+#pragma once
+// Each subcommand of `planet` lives in its own file and registers itself on
+// the CLI11 app here; main() only parses and catches. A registration
+// function adds the subcommand with its options and a callback that does
+// the work (CLI11 runs the callback after a successful parse).
+#include <CLI/CLI.hpp>
+
+namespace planet::apps {
+
+void add_capture_command(CLI::App& app);
+void add_bench_command(CLI::App& app);
+// `planet probe <quantity>`: the probe parent, to which modules add their
+// quantities (transmittance, sky, sun, ...).
+CLI::App& add_probe_command(CLI::App& app);
+
+}  // namespace planet::apps
