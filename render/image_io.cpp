@@ -30,6 +30,9 @@ void write_rgb(const std::filesystem::path& file, int width, int height,
   if (!out) throw SystemError(fmt::format("{}: {}", file.string(), OIIO::geterror()));
   OIIO::ImageSpec spec(width, height, 3, type);
   if (type == OIIO::TypeDesc::FLOAT) spec.attribute("compression", "zip");
+  // OpenEXR files otherwise get the wall-clock time (capDate), and the same
+  // capture must give the same bytes.
+  spec.attribute("DateTime", "2000:01:01 00:00:00");
   if (!out->open(partial.string(), spec) || !out->write_image(type, rgb.data()) ||
       !out->close()) {
     std::string error = out->geterror();
