@@ -69,17 +69,21 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
   if (first < 0 || first >= end || end > total) {
     throw InputError(fmt::format("frames {}:{} are outside the flight's 0:{}", first, end, total));
   }
-  std::filesystem::create_directories(options.out_dir);
-  const auto finished_marker = options.out_dir / "capture.json";
-  std::filesystem::remove(finished_marker);
-
   std::optional<AtmosphereModel> atmosphere;
   std::unique_ptr<AtmosphereTechnique> technique;
   if (script.body.has_atmosphere()) {
     atmosphere = parse_atmosphere(
         JsonObject(script.body.atmosphere, script.body.file.string(), "atmosphere"));
-    technique = make_technique(script.technique);
+    try {
+      technique = make_technique(script.technique);
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("{}: technique: {}", script.file.string(), e.what()));
+    }
   }
+  std::filesystem::create_directories(options.out_dir);
+  const auto finished_marker = options.out_dir / "capture.json";
+  std::filesystem::remove(finished_marker);
+
   FrameRenderer renderer(script.width, script.height);
   renderer.set_body(script.body, atmosphere, std::move(technique));
   FlightPath path(script);
