@@ -67,7 +67,8 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
   const int first = options.first_frame;
   const int end = options.end_frame < 0 ? total : options.end_frame;
   if (first < 0 || first >= end || end > total) {
-    throw InputError(fmt::format("frames {}:{} are outside the flight's 0:{}", first, end, total));
+    throw InputError(fmt::format("{}: --frames {}:{} lies outside the flight's frames 0:{}",
+                                 script.file.string(), first, end, total));
   }
   std::optional<AtmosphereModel> atmosphere;
   std::unique_ptr<AtmosphereTechnique> technique;

@@ -59,8 +59,7 @@ class EglContext final : public GlContext {
     if (context_ == EGL_NO_CONTEXT) {
       eglTerminate(display_);
       throw SystemError(fmt::format(
-          "EGL: the driver cannot create an OpenGL 4.5 core context (EGL error 0x{:x}); {}",
-          eglGetError(), kInstallHint));
+          "EGL: the driver cannot create an OpenGL 4.5 core context; {}", kInstallHint));
     }
     if (!eglMakeCurrent(display_, EGL_NO_SURFACE, EGL_NO_SURFACE, context_)) {
       eglDestroyContext(display_, context_);
