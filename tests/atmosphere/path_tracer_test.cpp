@@ -170,7 +170,7 @@ TEST(PathTracerTest, SingleScatteringAgreesWithQuadrature) {
     for (int channel = 0; channel < 3; ++channel) {
       double expected = single_scattering_quadrature(model, channel, c.origin, c.dir, sun);
       RadianceEstimate e = estimate_radiance(medium, size_t(channel), c.origin, c.dir, sun, order1,
-                                             40000, 99 + uint64_t(channel));
+                                             20000, 99 + uint64_t(channel));
       EXPECT_LT(std::abs(e.mean - expected), 3.0 * e.std_error)
           << c.what << ", channel " << channel << ": path tracer " << e.mean << " +- "
           << e.std_error << ", quadrature " << expected;
