@@ -12,5 +12,6 @@ void add_bench_command(CLI::App& app);
 // `planet probe <quantity>`: the probe parent, to which modules add their
 // quantities (transmittance, sky, sun, ...).
 CLI::App& add_probe_command(CLI::App& app);
+void add_probe_sun_command(CLI::App& probe);
 
 }  // namespace planet::apps

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   planet::apps::add_capture_command(app);
   planet::apps::add_bench_command(app);
   [[maybe_unused]] CLI::App& probe = planet::apps::add_probe_command(app);
+  planet::apps::add_probe_sun_command(probe);
 
   try {
     app.parse(argc, argv);

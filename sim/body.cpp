@@ -24,6 +24,12 @@ Body load_body(const std::filesystem::path& file) {
   shape.finish();
 
   if (root.has("atmosphere")) body.atmosphere = root.raw("atmosphere");
+  body.gm = root.number_or("gm_m3_s2", 0.0, 0.0, 1e22);
+  if (root.has("rotation")) {
+    body.rotation = parse_rotation(root.object("rotation"));
+    body.has_rotation = true;
+  }
+  if (root.has("ephemeris")) body.ephemeris = parse_ephemeris(root.object("ephemeris"));
   root.finish();
   return body;
 }
