@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <string>
 
@@ -58,7 +59,13 @@ void run(const CaptureArgs& args) {
                  script.body.name.c_str(), script.width, script.height, script.frame_count(),
                  script.frame_rate, script.technique.c_str(), context->renderer().c_str());
   }
-  CaptureResult result = run_capture(script, options);
+  CaptureResult result;
+  try {
+    result = run_capture(script, options);
+  } catch (const CaptureInterrupted& e) {
+    std::fprintf(stderr, "planet: %s\n", e.what());
+    std::exit(130);  // as a shell reports a program stopped by SIGINT
+  }
   std::printf("captured %d frames in %.1f s into %s (first %s, last %s)\n", result.frames,
               result.wall_seconds, options.out_dir.string().c_str(),
               result.first_png.filename().string().c_str(),
