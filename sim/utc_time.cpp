@@ -117,7 +117,9 @@ double tt_minus_utc(UtcSeconds utc) {
 }
 
 void SimClock::rebase_to_millisecond() {
-  set(std::round(utc() * 1000.0) / 1000.0);
+  // Through the text, so that a script that reads the epoch back gets the
+  // very same double.
+  set(parse_utc(format_utc(utc()), "clock"));
 }
 
 }  // namespace planet
