@@ -297,10 +297,33 @@ class FlySession {
 
 void run(const FlyArgs& args) {
   // Fail on bad input before a window opens.
+  if (!(args.lat_deg >= -90.0 && args.lat_deg <= 90.0)) {
+    throw InputError(fmt::format("--lat: {} is not a latitude (-90 to 90 deg)", args.lat_deg));
+  }
+  if (!(args.lon_deg >= -180.0 && args.lon_deg <= 360.0)) {
+    throw InputError(fmt::format("--lon: {} is not a longitude (-180 to 360 deg)", args.lon_deg));
+  }
+  if (args.orbit_inclination_deg > 180.0) {
+    throw InputError("--orbit-inclination: must be 0 to 180 deg");
+  }
   parse_utc(args.time, "--time");
   Body body = load_body(find_body_file(args.planet));
-  if (args.height_m < -0.5 * body.shape.polar_radius()) {
-    throw InputError(fmt::format("--height: {} m is deep inside {}", args.height_m, body.name));
+  if (args.height_m < 0) {
+    throw InputError(fmt::format("--height: {} m is inside {}", args.height_m, body.name));
+  }
+  auto names = technique_names();
+  if (std::find(names.begin(), names.end(), args.technique) == names.end()) {
+    throw InputError(fmt::format("--technique: '{}' is not one of {}", args.technique,
+                                 fmt::join(names, ", ")));
+  }
+  if (args.orbit_inclination_deg >= 0) {
+    Geodetic place{glm::radians(args.lat_deg), glm::radians(args.lon_deg), args.height_m};
+    try {
+      circular_orbit_over(body, place, glm::radians(args.orbit_inclination_deg), true,
+                          parse_utc(args.time, "--time"));
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("--orbit-inclination: {}", e.what()));
+    }
   }
   ContextOptions options;
   options.width = args.width;
@@ -333,17 +356,14 @@ void add_fly_command(CLI::App& app) {
   auto args = std::make_shared<FlyArgs>();
   CLI::App* cmd = app.add_subcommand("fly", "Fly over a body in a window (mouse, keyboard, HUD)");
   cmd->add_option("--planet", args->planet, "Body name or file")->capture_default_str();
-  cmd->add_option("--lat", args->lat_deg, "Start latitude, degrees")
-      ->check(CLI::Range(-90.0, 90.0))->capture_default_str();
-  cmd->add_option("--lon", args->lon_deg, "Start longitude, degrees")
-      ->check(CLI::Range(-180.0, 360.0))->capture_default_str();
+  cmd->add_option("--lat", args->lat_deg, "Start latitude, degrees")->capture_default_str();
+  cmd->add_option("--lon", args->lon_deg, "Start longitude, degrees")->capture_default_str();
   cmd->add_option("--height", args->height_m, "Start height above the surface, metres")
       ->capture_default_str();
   cmd->add_option("--heading", args->heading_deg, "Start heading, degrees from north")
       ->capture_default_str();
   cmd->add_option("--orbit-inclination", args->orbit_inclination_deg,
-                  "Start in a circular orbit at --height with this inclination, degrees")
-      ->check(CLI::Range(0.0, 180.0));
+                  "Start in a circular orbit at --height with this inclination, degrees");
   cmd->add_option("--time", args->time, "Start time, UTC")->capture_default_str();
   cmd->add_option("--technique", args->technique, "Atmosphere technique")->capture_default_str();
   cmd->add_option("--exposure", args->exposure, "Exposure")->check(CLI::PositiveNumber)

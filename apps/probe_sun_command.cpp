@@ -30,6 +30,12 @@ std::string clock_text(double hours) {
 }
 
 void run(const ProbeSunArgs& args) {
+  if (!(args.lat_deg >= -90.0 && args.lat_deg <= 90.0)) {
+    throw InputError(fmt::format("--lat: {} is not a latitude (-90 to 90 deg)", args.lat_deg));
+  }
+  if (!(args.lon_deg >= -180.0 && args.lon_deg <= 360.0)) {
+    throw InputError(fmt::format("--lon: {} is not a longitude (-180 to 360 deg)", args.lon_deg));
+  }
   Body body = load_body(find_body_file(args.planet));
   UtcSeconds utc = parse_utc(args.time, "--time");
   if (!body.ephemeris.available()) {
@@ -73,11 +79,9 @@ void add_probe_sun_command(CLI::App& probe) {
   cmd->add_option("--planet", args->planet, "Body name or file (earth, mars, asteroid)")
       ->capture_default_str();
   cmd->add_option("--lat", args->lat_deg, "Geodetic latitude, degrees")
-      ->required()
-      ->check(CLI::Range(-90.0, 90.0));
+      ->required();
   cmd->add_option("--lon", args->lon_deg, "Longitude east, degrees")
-      ->required()
-      ->check(CLI::Range(-180.0, 360.0));
+      ->required();
   cmd->add_option("--time", args->time, "UTC, e.g. 2026-06-21T12:00:00Z")->required();
   cmd->callback([args] { run(*args); });
 }

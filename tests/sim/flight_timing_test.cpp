@@ -2,6 +2,7 @@
 // position and attitude at keyframes, no flip over a pole, the sun
 // following the clock, and bad input.
 #include "sim/attitude_curve.h"
+#include "sim/data_paths.h"
 #include "sim/error.h"
 #include "sim/flight_recorder.h"
 #include "sim/flight_script.h"
@@ -206,6 +207,32 @@ TEST_F(FlightTimingTest, BadTimesOrbitsAndTargetsAreClearErrors) {
   expect_error(script(R"("start_utc": "2026-06-21T00:00:00Z")",
                       R"({"time": 0, "lat_deg": 0, "lon_deg": 0, "height_m": 0, "look_at": {"lat_deg": 0, "lon_deg": 0}})"),
                {"keyframes[0].look_at", "where the camera is"});
+}
+
+TEST_F(FlightTimingTest, ShippedFlightsStayAboveGroundAndShowWhatTheyPromise) {
+  for (const char* name : {"ascent", "mars_sunset", "asteroid_landing", "earth_orbit_terminator"}) {
+    SCOPED_TRACE(name);
+    FlightScript s = load_flight_script(data_dir() / "flights" / (std::string(name) + ".json"));
+    FlightPath path(s);
+    EXPECT_GE(s.frame_count(), 30);
+    for (int i = 0; i < s.frame_count(); ++i) {
+      EXPECT_GT(path.place_at(s.frame_time(i)).height, 1.0) << "frame " << i;
+    }
+  }
+  // The Mars sunset starts with the sun up and ends with it set.
+  FlightScript mars = load_flight_script(data_dir() / "flights" / "mars_sunset.json");
+  FlightPath mars_path(mars);
+  auto elevation = [](const FlightPath& p, double t) {
+    Geodetic g = p.place_at(t);
+    return glm::degrees(horizon_angles(p.sun_dir_at(t), g.lat, g.lon).elevation);
+  };
+  EXPECT_GT(elevation(mars_path, 0.0), 5.0);
+  EXPECT_LT(elevation(mars_path, mars.duration()), 0.0);
+  // The orbit crosses the terminator from day into night.
+  FlightScript orbit = load_flight_script(data_dir() / "flights" / "earth_orbit_terminator.json");
+  FlightPath orbit_path(orbit);
+  EXPECT_GT(elevation(orbit_path, 0.0), 30.0);
+  EXPECT_LT(elevation(orbit_path, orbit.duration()), -30.0);
 }
 
 }  // namespace
