@@ -10,6 +10,7 @@
 #include "sim/flight_recorder.h"
 #include "sim/free_flight.h"
 #include "sim/orbit_flight.h"
+#include "sim/scripted_flight.h"
 #include "sim/sun_ephemeris.h"
 #include "sim/utc_time.h"
 
@@ -36,13 +37,22 @@ constexpr double kRecordRate = 10.0;   // recorded keyframes (= capture frames) 
 const std::array<const char*, 3> kBodies = {"earth", "mars", "asteroid"};
 const std::array<double, 6> kTimeScales = {0.0, 1.0, 10.0, 100.0, 1000.0, 10000.0};
 
+// Key presses as they arrive: a frame on a software renderer can take a
+// second, longer than a tap, so polling the key state would miss them.
+std::vector<int> g_key_presses;
+void on_key(GLFWwindow*, int key, int, int action, int) {
+  if (action == GLFW_PRESS) g_key_presses.push_back(key);
+}
+
 struct FlyArgs {
   std::string planet = "earth", technique = "raymarch", time = "2026-06-21T10:00:00Z";
   double lat_deg = 46.55, lon_deg = 7.98, height_m = 2.0, heading_deg = 90.0;
   double orbit_inclination_deg = -1;
   int width = 960, height = 540;
+  double render_scale = 0.5;  // of the window; llvmpipe is slow at full size
   double exposure = 8.0, vertical_fov_deg = 60.0;
   std::string out_dir = ".";
+  std::string flight_file;  // fly a script instead of the start place
 };
 
 class FlySession {
@@ -55,8 +65,19 @@ class FlySession {
       throw InputError(fmt::format("--technique: '{}' is not one of {}", technique_,
                                    fmt::join(names, ", ")));
     }
-    renderer_ = std::make_unique<FrameRenderer>(args.width, args.height);
-    load(args.planet, true);
+    renderer_ = std::make_unique<FrameRenderer>(std::max(1, int(args.width * args.render_scale)),
+                                                std::max(1, int(args.height * args.render_scale)));
+    if (!args.flight_file.empty()) {
+      FlightScript script = load_flight_script(args.flight_file);
+      technique_ = script.technique;
+      exposure_ = script.exposure;
+      load(script.body.file.string(), false);
+      auto scripted = std::make_unique<ScriptedFlight>(std::move(script));
+      scripted_ = scripted.get();
+      controller_ = std::move(scripted);
+    } else {
+      load(args.planet, true);
+    }
   }
 
   // One frame of the program: input, fixed steps, render, HUD. False to quit.
@@ -65,11 +86,18 @@ class FlySession {
     if (glfwWindowShouldClose(window_)) return false;
     handle_keys();
     FlightInput input = read_input();
-    for (int i = step_.advance(real_dt); i > 0; --i) {
+    // Up to half a second of steps per frame: the simulation keeps real time
+    // on a slow renderer, and a stall (a window drag) is dropped.
+    for (int i = step_.advance(real_dt, 60); i > 0; --i) {
       // The clock runs at its scale; the pilot flies in real time (a paused
       // or fast clock changes the sun, not the controls).
       clock_.advance(kStep);
       controller_->step(kStep, clock_.utc(), input);
+      if (scripted_) {
+        if (scripted_->finished()) glfwSetWindowShouldClose(window_, GLFW_TRUE);
+        exposure_ = scripted_->exposure();
+        clock_.set(scripted_->utc());
+      }
       ++steps_;
       if (recorder_ && steps_ % int(std::lround(1.0 / (kStep * kRecordRate))) == 0) {
         recorder_->add(camera(), clock_.elapsed(), exposure_);
@@ -93,12 +121,14 @@ class FlySession {
   }
 
   glm::dvec3 sun_dir() const {
+    if (scripted_) return scripted_->sun_dir_body();
     if (!body_.ephemeris.available()) return glm::dvec3(0, 0, 1);
     return sun_dir_body(body_.ephemeris, body_.rotation, clock_.utc());
   }
 
-  void load(const std::string& name, bool from_args, bool announce = true) {
-    Body body = load_body(find_body_file(name));
+  // Gives the renderer the body with its atmosphere drawn by the current
+  // technique.
+  void attach(const Body& body) {
     std::optional<AtmosphereModel> atmosphere;
     std::unique_ptr<AtmosphereTechnique> technique;
     if (body.has_atmosphere()) {
@@ -106,11 +136,18 @@ class FlySession {
       technique = make_technique(technique_);
     }
     renderer_->set_body(body, atmosphere, std::move(technique));
+  }
+
+  // A new body: the pilot starts over the start place (a few km up unless
+  // it came from the command line).
+  void load(const std::string& name, bool from_args) {
+    Body body = load_body(find_body_file(name));
+    attach(body);
     body_ = body;
     body_key_ = name;
     Geodetic place{glm::radians(args_.lat_deg), glm::radians(args_.lon_deg), args_.height_m};
     if (!from_args) place.height = std::max(2.0, 1e-3 * body.shape.equatorial_radius);
-    if (place.height < 0) throw InputError(fmt::format("--height: {} m is inside the body", place.height));
+    scripted_ = nullptr;
     if (from_args && args_.orbit_inclination_deg >= 0) {
       KeplerOrbit orbit = circular_orbit_over(body, place, glm::radians(args_.orbit_inclination_deg),
                                               true, clock_.utc());
@@ -118,43 +155,41 @@ class FlySession {
     } else {
       controller_ = std::make_unique<FreeFlight>(body, place, glm::radians(args_.heading_deg));
     }
-    if (announce) {
-      std::printf("body: %s\n", body.name.c_str());
-      std::fflush(stdout);
-    }
+    std::printf("body: %s\n", body.name.c_str());
+    std::fflush(stdout);
   }
 
+  // A new technique: same body, same place.
   void set_technique(const std::string& name) {
     technique_ = name;
-    load(body_key_, false, false);
+    attach(body_);
     std::printf("technique: %s\n", name.c_str());
     std::fflush(stdout);
   }
 
-  bool pressed_once(int key) {
-    bool down = glfwGetKey(window_, key) == GLFW_PRESS;
-    bool was = key_down_[size_t(key) % key_down_.size()];
-    key_down_[size_t(key) % key_down_.size()] = down;
-    return down && !was;
+  void handle_keys() {
+    std::vector<int> keys;
+    keys.swap(g_key_presses);
+    if (ImGui::GetIO().WantCaptureKeyboard) return;
+    for (int key : keys) handle_key(key);
   }
 
-  void handle_keys() {
-    if (ImGui::GetIO().WantCaptureKeyboard) return;
-    if (pressed_once(GLFW_KEY_ESCAPE)) glfwSetWindowShouldClose(window_, GLFW_TRUE);
-    if (pressed_once(GLFW_KEY_B)) {
+  void handle_key(int key) {
+    if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(window_, GLFW_TRUE);
+    if (key == GLFW_KEY_B) {
       size_t i = 0;
       while (i < kBodies.size() && body_key_ != kBodies[i]) ++i;
       load(kBodies[(i + 1) % kBodies.size()], false);
     }
-    if (pressed_once(GLFW_KEY_T)) {
+    if (key == GLFW_KEY_T) {
       auto names = technique_names();
       auto it = std::find(names.begin(), names.end(), technique_);
       size_t i = it == names.end() ? 0 : size_t(it - names.begin());
       set_technique(names[(i + 1) % names.size()]);
     }
-    if (pressed_once(GLFW_KEY_F12)) screenshot();
-    if (pressed_once(GLFW_KEY_F9)) toggle_recording();
-    if (pressed_once(GLFW_KEY_P)) clock_.set_scale(clock_.scale() > 0 ? 0.0 : 1.0);
+    if (key == GLFW_KEY_F12) screenshot();
+    if (key == GLFW_KEY_F9) toggle_recording();
+    if (key == GLFW_KEY_P) clock_.set_scale(clock_.scale() > 0 ? 0.0 : 1.0);
   }
 
   FlightInput read_input() {
@@ -231,9 +266,10 @@ class FlySession {
     HorizonAngles sun_angles = horizon_angles(sun, g.lat, g.lon);
     std::string passes;
     for (const auto& p : stats_.passes) passes += fmt::format(" {} {:.2f}", p.pass, p.gpu_ms);
-    ImGui::Text("h %.1f m  v %.2f m/s  lat %.4f lon %.4f  sun %.1f deg  frame %.1f ms  gpu ms:%s",
-                g.height, controller_->speed(), glm::degrees(g.lat), glm::degrees(g.lon),
-                glm::degrees(sun_angles.elevation), real_dt * 1e3, passes.c_str());
+    ImGui::Text("height %.1f m  speed %.2f m/s  lat %.4f  lon %.4f  sun %.1f deg", g.height,
+                controller_->speed(), glm::degrees(g.lat), glm::degrees(g.lon),
+                glm::degrees(sun_angles.elevation));
+    ImGui::Text("frame %.1f ms  gpu ms:%s", real_dt * 1e3, passes.c_str());
     ImGui::Text("%s  UTC %s%s", body_.name.c_str(), format_utc(clock_.utc()).c_str(),
                 recorder_ ? "  [recording]" : "");
     int body_index = 0;
@@ -285,10 +321,10 @@ class FlySession {
   Body body_;
   std::unique_ptr<FrameRenderer> renderer_;
   std::unique_ptr<FlightController> controller_;
+  ScriptedFlight* scripted_ = nullptr;  // the controller, when flying a script
   std::unique_ptr<FlightRecorder> recorder_;
   FrameStats stats_;
   GLuint read_fbo_ = 0;
-  std::array<bool, 512> key_down_{};
   double mouse_x_ = 0, mouse_y_ = 0;
   long steps_ = 0;
   int screenshots_ = 0, flights_ = 0;
@@ -297,6 +333,10 @@ class FlySession {
 
 void run(const FlyArgs& args) {
   // Fail on bad input before a window opens.
+  if (!(args.render_scale > 0.05 && args.render_scale <= 2.0)) {
+    throw InputError(fmt::format("--render-scale: {} is not within 0.05 to 2", args.render_scale));
+  }
+  if (!args.flight_file.empty()) load_flight_script(args.flight_file);
   if (!(args.lat_deg >= -90.0 && args.lat_deg <= 90.0)) {
     throw InputError(fmt::format("--lat: {} is not a latitude (-90 to 90 deg)", args.lat_deg));
   }
@@ -333,6 +373,8 @@ void run(const FlyArgs& args) {
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;
+  // Installed first: ImGui's backend chains to it.
+  glfwSetKeyCallback(context->window(), on_key);
   ImGui_ImplGlfw_InitForOpenGL(context->window(), true);
   ImGui_ImplOpenGL3_Init("#version 450");
   {
@@ -372,6 +414,11 @@ void add_fly_command(CLI::App& app) {
         return std::sscanf(r[0].c_str(), "%dx%d", &args->width, &args->height) == 2 &&
                args->width > 0 && args->height > 0;
       }, "Window size WxH (960x540)");
+  cmd->add_option("--flight", args->flight_file,
+                  "Fly a flight script (data/flights/*.json) as capture would; ends with it");
+  cmd->add_option("--render-scale", args->render_scale,
+                  "Rendered size relative to the window (0.5 halves it; screenshots are this size)")
+      ->capture_default_str();
   cmd->add_option("--out", args->out_dir, "Folder for screenshots and recorded flights")
       ->capture_default_str();
   cmd->callback([args] { run(*args); });

@@ -48,6 +48,9 @@ press F12 2      # body: Earth, screenshot
 press b 3        # body: Mars
 press t 4        # technique: ...
 press F12 5      # screenshot
+press F9 6       # recording
+sleep 1.5
+press F9 7       # recorded N frames into ...
 xdotool keydown Escape; sleep 0.5; xdotool keyup Escape
 wait "$fly"; rc=$?
 cat "$work/fly.txt"
@@ -61,4 +64,10 @@ for n in 0000 0001; do
 done
 cmp -s "$work/screenshot_0000.png" "$work/screenshot_0001.png" &&
   { echo "FAIL: Earth and Mars screenshots are the same image"; exit 1; }
-echo "window opened, switched body and technique, wrote two screenshots"
+# The recorded flight replays headless.
+recorded=$(grep -o "into [^ ]*flight_0000.json" "$work/fly.txt" | cut -d' ' -f2)
+[ -n "$recorded" ] && [ -f "$recorded" ] || { echo "FAIL: no recorded flight"; exit 1; }
+"$planet" capture --flight "$recorded" --out "$work/replay" --quiet ||
+  { echo "FAIL: the recorded flight does not replay"; exit 1; }
+[ -f "$work/replay/frame_00001.png" ] || { echo "FAIL: replay has fewer than two frames"; exit 1; }
+echo "window opened, switched body and technique, wrote two screenshots, recorded a flight that replays"
