@@ -7,7 +7,9 @@ namespace planet {
 
 FreeFlight::FreeFlight(const Body& body, const Geodetic& place, double heading)
     : geodesy_(body.shape), ground_([](const Geodetic&) { return 0.0; }) {
-  camera_.pos_body = geodesy_.body_from_geodetic(place);
+  Geodetic start = place;
+  start.height = std::max(start.height, kClearance);
+  camera_.pos_body = geodesy_.body_from_geodetic(start);
   camera_.body_from_camera = glm::normalize(glm::quat_cast(geodesy_.body_from_enu(place)) *
                                             enu_from_camera(heading, 0.0, 0.0));
 }
@@ -29,7 +31,7 @@ void FreeFlight::step(double dt, UtcSeconds, const FlightInput& input) {
   camera_.body_from_camera = glm::normalize(camera_.body_from_camera * delta);
 
   double height = std::max(height_above_ground(), 0.0);
-  double max_speed = std::clamp(height, kMinSpeed, kMaxSpeed) * std::max(input.boost, 0.0);
+  double max_speed = std::clamp(kSpeedPerHeight * height, kMinSpeed, kMaxSpeed) * std::max(input.boost, 0.0);
   glm::dvec3 move = glm::clamp(input.move, -1.0, 1.0);
   glm::dvec3 dir_camera(move.x, move.y, -move.z);
   glm::dvec3 displacement = camera_.body_from_camera * dir_camera * (max_speed * dt);

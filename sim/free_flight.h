@@ -1,8 +1,8 @@
 #pragma once
 // Free flight: six degrees of freedom in the body-fixed frame, speed scaled
-// with the height above the surface (1 m/s per metre of height: centimetres
-// per second at the ground, thousands of km per second far out), never
-// below a clearance above the surface.
+// with the height above the surface (0.2 m/s per metre of height:
+// centimetres per second at the ground, thousands of km per second far
+// out), never below a clearance above the surface.
 #include "sim/flight_controller.h"
 #include "sim/geodesy.h"
 
@@ -26,6 +26,7 @@ class FreeFlight : public FlightController {
   double height_above_ground() const;
 
   static constexpr double kClearance = 0.5;     // metres above the surface
+  static constexpr double kSpeedPerHeight = 0.2;  // per second
   static constexpr double kMinSpeed = 0.02;     // metres per second
   static constexpr double kMaxSpeed = 5.0e6;    // metres per second
   static constexpr double kTurnRate = 1.2;      // radians per second at full input
