@@ -78,8 +78,7 @@ void add_capture_command(CLI::App& app) {
   auto args = std::make_shared<CaptureArgs>();
   CLI::App* cmd =
       app.add_subcommand("capture", "Render a scripted flight headless into EXR + PNG frames");
-  cmd->add_option("--flight", args->flight_file, "Flight script (data/flights/*.json)")
-      ->required();
+  cmd->add_option("--flight", args->flight_file, "Flight script (data/flights/*.json)")->required();
   cmd->add_option("--out", args->out_dir, "Output folder (default out/<flight name>)");
   cmd->add_option("--frames", args->frames, "Slice of frames A:B to render (B exclusive)");
   cmd->add_flag("--quiet", args->quiet, "No progress output");

@@ -58,12 +58,15 @@ struct FlyArgs {
 class FlySession {
  public:
   FlySession(const FlyArgs& args, GLFWwindow* window)
-      : args_(args), window_(window), clock_(parse_utc(args.time, "--time")),
-        exposure_(args.exposure), technique_(args.technique) {
+      : args_(args),
+        window_(window),
+        clock_(parse_utc(args.time, "--time")),
+        exposure_(args.exposure),
+        technique_(args.technique) {
     auto names = technique_names();
     if (std::find(names.begin(), names.end(), technique_) == names.end()) {
-      throw InputError(fmt::format("--technique: '{}' is not one of {}", technique_,
-                                   fmt::join(names, ", ")));
+      throw InputError(
+          fmt::format("--technique: '{}' is not one of {}", technique_, fmt::join(names, ", ")));
     }
     renderer_ = std::make_unique<FrameRenderer>(std::max(1, int(args.width * args.render_scale)),
                                                 std::max(1, int(args.height * args.render_scale)));
@@ -149,8 +152,8 @@ class FlySession {
     if (!from_args) place.height = std::max(2.0, 1e-3 * body.shape.equatorial_radius);
     scripted_ = nullptr;
     if (from_args && args_.orbit_inclination_deg >= 0) {
-      KeplerOrbit orbit = circular_orbit_over(body, place, glm::radians(args_.orbit_inclination_deg),
-                                              true, clock_.utc());
+      KeplerOrbit orbit = circular_orbit_over(
+          body, place, glm::radians(args_.orbit_inclination_deg), true, clock_.utc());
       controller_ = std::make_unique<OrbitFlight>(body, orbit, clock_.utc());
     } else {
       controller_ = std::make_unique<FreeFlight>(body, place, glm::radians(args_.heading_deg));
@@ -221,16 +224,18 @@ class FlySession {
     glfwGetFramebufferSize(window_, &w, &h);
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
     glViewport(0, 0, w, h);
-    glBlitNamedFramebuffer(read_fbo_, 0, 0, 0, renderer_->width(), renderer_->height(), 0, 0, w,
-                           h, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+    glBlitNamedFramebuffer(read_fbo_, 0, 0, 0, renderer_->width(), renderer_->height(), 0, 0, w, h,
+                           GL_COLOR_BUFFER_BIT, GL_LINEAR);
   }
 
   void screenshot() {
     std::filesystem::create_directories(args_.out_dir);
     std::string stem = fmt::format("screenshot_{:04d}", screenshots_++);
     auto base = std::filesystem::path(args_.out_dir) / stem;
-    write_exr(base.string() + ".exr", renderer_->width(), renderer_->height(), renderer_->read_hdr());
-    write_png(base.string() + ".png", renderer_->width(), renderer_->height(), renderer_->read_ldr());
+    write_exr(base.string() + ".exr", renderer_->width(), renderer_->height(),
+              renderer_->read_hdr());
+    write_png(base.string() + ".png", renderer_->width(), renderer_->height(),
+              renderer_->read_ldr());
     std::printf("screenshot: %s.png and .exr\n", base.string().c_str());
     std::fflush(stdout);
   }
@@ -246,7 +251,8 @@ class FlySession {
       std::printf("recording\n");
     } else {
       std::filesystem::create_directories(args_.out_dir);
-      auto file = std::filesystem::path(args_.out_dir) / fmt::format("flight_{:04d}.json", flights_++);
+      auto file =
+          std::filesystem::path(args_.out_dir) / fmt::format("flight_{:04d}.json", flights_++);
       recorder_->write(file);
       std::printf("recorded %d frames into %s (replay: planet capture --flight %s)\n",
                   recorder_->frames(), file.string().c_str(), file.string().c_str());
@@ -353,8 +359,8 @@ void run(const FlyArgs& args) {
   }
   auto names = technique_names();
   if (std::find(names.begin(), names.end(), args.technique) == names.end()) {
-    throw InputError(fmt::format("--technique: '{}' is not one of {}", args.technique,
-                                 fmt::join(names, ", ")));
+    throw InputError(
+        fmt::format("--technique: '{}' is not one of {}", args.technique, fmt::join(names, ", ")));
   }
   if (args.orbit_inclination_deg >= 0) {
     Geodetic place{glm::radians(args.lat_deg), glm::radians(args.lon_deg), args.height_m};
@@ -408,12 +414,16 @@ void add_fly_command(CLI::App& app) {
                   "Start in a circular orbit at --height with this inclination, degrees");
   cmd->add_option("--time", args->time, "Start time, UTC")->capture_default_str();
   cmd->add_option("--technique", args->technique, "Atmosphere technique")->capture_default_str();
-  cmd->add_option("--exposure", args->exposure, "Exposure")->check(CLI::PositiveNumber)
+  cmd->add_option("--exposure", args->exposure, "Exposure")
+      ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  cmd->add_option("--size", [args](const CLI::results_t& r) {
+  cmd->add_option(
+      "--size",
+      [args](const CLI::results_t& r) {
         return std::sscanf(r[0].c_str(), "%dx%d", &args->width, &args->height) == 2 &&
                args->width > 0 && args->height > 0;
-      }, "Window size WxH (960x540)");
+      },
+      "Window size WxH (960x540)");
   cmd->add_option("--flight", args->flight_file,
                   "Fly a flight script (data/flights/*.json) as capture would; ends with it");
   cmd->add_option("--render-scale", args->render_scale,

@@ -78,10 +78,8 @@ void add_probe_sun_command(CLI::App& probe) {
   CLI::App* cmd = probe.add_subcommand("sun", "The sun's elevation and azimuth over a place");
   cmd->add_option("--planet", args->planet, "Body name or file (earth, mars, asteroid)")
       ->capture_default_str();
-  cmd->add_option("--lat", args->lat_deg, "Geodetic latitude, degrees")
-      ->required();
-  cmd->add_option("--lon", args->lon_deg, "Longitude east, degrees")
-      ->required();
+  cmd->add_option("--lat", args->lat_deg, "Geodetic latitude, degrees")->required();
+  cmd->add_option("--lon", args->lon_deg, "Longitude east, degrees")->required();
   cmd->add_option("--time", args->time, "UTC, e.g. 2026-06-21T12:00:00Z")->required();
   cmd->callback([args] { run(*args); });
 }

@@ -10,11 +10,11 @@
 
 #include <glm/gtc/constants.hpp>
 
+#include <unistd.h>
+#include <algorithm>
 #include <chrono>
 #include <csignal>
-#include <algorithm>
 #include <cstdio>
-#include <unistd.h>
 
 namespace planet {
 
@@ -105,9 +105,10 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
     if (g_interrupted) {
       std::signal(SIGINT, previous_handler);
       if (options.progress && isatty(fileno(stderr))) std::fprintf(stderr, "\n");
-      throw CaptureInterrupted(fmt::format(
-          "interrupted: frames {} to {} are complete in {}; resume with --frames {}:{}", first,
-          frame - 1, options.out_dir.string(), frame, end == total ? std::string() : std::to_string(end)));
+      throw CaptureInterrupted(
+          fmt::format("interrupted: frames {} to {} are complete in {}; resume with --frames {}:{}",
+                      first, frame - 1, options.out_dir.string(), frame,
+                      end == total ? std::string() : std::to_string(end)));
     }
     double t = script.frame_time(frame);
     Camera camera = path.camera_at(t);
@@ -117,8 +118,9 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
     std::string stem = fmt::format("frame_{:05d}", frame);
     write_exr(options.out_dir / (stem + ".exr"), script.width, script.height, renderer.read_hdr());
     write_png(options.out_dir / (stem + ".png"), script.width, script.height, renderer.read_ldr());
-    write_text_file(options.out_dir / (stem + ".json"),
-                    sidecar(script, path, geodesy, frame, t, camera, exposure, sun, stats).dump(2) + "\n");
+    write_text_file(
+        options.out_dir / (stem + ".json"),
+        sidecar(script, path, geodesy, frame, t, camera, exposure, sun, stats).dump(2) + "\n");
     if (frame == first) result.first_png = options.out_dir / (stem + ".png");
     result.last_png = options.out_dir / (stem + ".png");
     ++result.frames;

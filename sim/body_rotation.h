@@ -13,10 +13,10 @@ namespace planet {
 class JsonObject;
 
 struct BodyRotation {
-  double pole_ra = 0;                  // radians, ICRF
+  double pole_ra = 0;  // radians, ICRF
   double pole_dec = glm::radians(90.0);
-  double prime_meridian_j2000 = 0;     // W0, radians
-  double sidereal_period = 86400.0;    // seconds; the frame is fixed when 0
+  double prime_meridian_j2000 = 0;   // W0, radians
+  double sidereal_period = 86400.0;  // seconds; the frame is fixed when 0
 
   // The body's inertial equatorial frame: z the pole, x the ascending node
   // of the body's equator on the ICRF equator.

@@ -85,8 +85,9 @@ FlightScript load_flight_script(const std::filesystem::path& file) {
 
   // The sun: by the clock and the body's ephemeris, or fixed by hand.
   if (root.has("start_utc") == root.has("sun")) {
-    root.fail("give either \"start_utc\" (the sun from the body's ephemeris) or \"sun\" "
-              "(elevation and azimuth), not both or neither");
+    root.fail(
+        "give either \"start_utc\" (the sun from the body's ephemeris) or \"sun\" "
+        "(elevation and azimuth), not both or neither");
   }
   if (root.has("start_utc")) {
     s.has_clock = true;
@@ -111,8 +112,8 @@ FlightScript load_flight_script(const std::filesystem::path& file) {
     Keyframe f;
     f.time = k.number("time", -1e9, 1e9);
     if (i > 0 && f.time <= s.keyframes.back().time) {
-      k.fail("time", fmt::format("{:g} does not come after the previous keyframe's {:g}",
-                                 f.time, s.keyframes.back().time));
+      k.fail("time", fmt::format("{:g} does not come after the previous keyframe's {:g}", f.time,
+                                 s.keyframes.back().time));
     }
     // The clock: set here, or running on from the previous keyframe.
     if (k.has("utc") || k.has("clock_s")) {
@@ -151,7 +152,8 @@ FlightScript load_flight_script(const std::filesystem::path& file) {
       JsonObject o = k.object("orbit");
       double inclination = glm::radians(o.number("inclination_deg", 0.0, 180.0));
       bool northbound = o.string_or("direction", "north") != "south";
-      if (o.has("direction") && o.string("direction") != "north" && o.string("direction") != "south") {
+      if (o.has("direction") && o.string("direction") != "north" &&
+          o.string("direction") != "south") {
         o.fail("direction", "must be \"north\" or \"south\"");
       }
       o.finish();
@@ -204,8 +206,7 @@ FlightScript load_flight_script(const std::filesystem::path& file) {
   return s;
 }
 
-FlightPath::FlightPath(const FlightScript& script)
-    : script_(&script), geodesy_(script.body.shape) {
+FlightPath::FlightPath(const FlightScript& script) : script_(&script), geodesy_(script.body.shape) {
   std::vector<double> t, lat, lon, h, log_exposure;
   std::vector<glm::dquat> attitude;
   for (const Keyframe& k : script.keyframes) {
@@ -276,7 +277,8 @@ glm::dvec3 FlightPath::sun_dir_at(double time) const {
 
 Geodetic FlightPath::place_at(double time) const {
   size_t orbit = orbit_segment(time);
-  if (orbit != std::string::npos) return place_on_orbit(*script_->keyframes[orbit].orbit, utc_at(time));
+  if (orbit != std::string::npos)
+    return place_on_orbit(*script_->keyframes[orbit].orbit, utc_at(time));
   return {lat_(time), std::remainder(lon_(time), 2.0 * glm::pi<double>()), height_(time)};
 }
 

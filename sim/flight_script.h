@@ -22,7 +22,7 @@ struct Keyframe {
   double time = 0;  // seconds from the start of the flight
   Geodetic place;
   double heading = 0, pitch = 0, roll = 0;  // radians, see enu_from_camera
-  double exposure = 1;  // the script's unless the keyframe gives its own
+  double exposure = 1;                      // the script's unless the keyframe gives its own
   // Resolved at load: the camera's attitude (from heading/pitch/roll, a
   // look-at target or a recorded quaternion) and its exact body position.
   glm::dquat body_from_camera{1, 0, 0, 0};

@@ -31,7 +31,8 @@ void FreeFlight::step(double dt, UtcSeconds, const FlightInput& input) {
   camera_.body_from_camera = glm::normalize(camera_.body_from_camera * delta);
 
   double height = std::max(height_above_ground(), 0.0);
-  double max_speed = std::clamp(kSpeedPerHeight * height, kMinSpeed, kMaxSpeed) * std::max(input.boost, 0.0);
+  double max_speed =
+      std::clamp(kSpeedPerHeight * height, kMinSpeed, kMaxSpeed) * std::max(input.boost, 0.0);
   glm::dvec3 move = glm::clamp(input.move, -1.0, 1.0);
   glm::dvec3 dir_camera(move.x, move.y, -move.z);
   glm::dvec3 displacement = camera_.body_from_camera * dir_camera * (max_speed * dt);

@@ -25,11 +25,11 @@ class FreeFlight : public FlightController {
   void set_ground(std::function<double(const Geodetic&)> ground) { ground_ = std::move(ground); }
   double height_above_ground() const;
 
-  static constexpr double kClearance = 0.5;     // metres above the surface
+  static constexpr double kClearance = 0.5;       // metres above the surface
   static constexpr double kSpeedPerHeight = 0.2;  // per second
-  static constexpr double kMinSpeed = 0.02;     // metres per second
-  static constexpr double kMaxSpeed = 5.0e6;    // metres per second
-  static constexpr double kTurnRate = 1.2;      // radians per second at full input
+  static constexpr double kMinSpeed = 0.02;       // metres per second
+  static constexpr double kMaxSpeed = 5.0e6;      // metres per second
+  static constexpr double kTurnRate = 1.2;        // radians per second at full input
 
  private:
   Geodesy geodesy_;

@@ -49,8 +49,9 @@ KeplerOrbit KeplerOrbit::from_state(const StateVector& state, double mu, double 
   o.epoch_ = epoch;
   o.a_ = -mu / (2.0 * energy);
   // Eccentricity vector, pointing at periapsis.
-  glm::dvec3 e_vec =
-      ((glm::dot(state.vel, state.vel) - mu / r) * state.pos - glm::dot(state.pos, state.vel) * state.vel) / mu;
+  glm::dvec3 e_vec = ((glm::dot(state.vel, state.vel) - mu / r) * state.pos -
+                      glm::dot(state.pos, state.vel) * state.vel) /
+                     mu;
   o.e_ = glm::length(e_vec);
   glm::dvec3 w = glm::normalize(h);
   // A circle has no periapsis: measure from the current position instead.
@@ -66,7 +67,8 @@ KeplerOrbit KeplerOrbit::from_state(const StateVector& state, double mu, double 
 KeplerOrbit KeplerOrbit::from_elements(const OrbitalElements& el, double mu, double epoch) {
   if (mu <= 0) throw InputError("an orbit needs the body's gm_m3_s2");
   if (!(el.eccentricity >= 0 && el.eccentricity < 1)) {
-    throw InputError(fmt::format("eccentricity {} is not that of an ellipse [0, 1)", el.eccentricity));
+    throw InputError(
+        fmt::format("eccentricity {} is not that of an ellipse [0, 1)", el.eccentricity));
   }
   if (!(el.semi_major_axis > 0)) throw InputError("the semi-major axis must be positive");
   KeplerOrbit o;

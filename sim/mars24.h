@@ -9,11 +9,11 @@
 namespace planet {
 
 struct MarsSun {
-  double ls = 0;                  // areocentric solar longitude Ls, radians in [0, 2 pi)
-  double equation_of_time = 0;    // radians of rotation (true minus mean sun)
-  double mean_solar_time_h = 0;   // MST (coordinated Mars time) at the prime meridian, hours
-  double subsolar_lon_east = 0;   // radians in (-pi, pi]
-  double subsolar_lat = 0;        // planetographic, radians
+  double ls = 0;                 // areocentric solar longitude Ls, radians in [0, 2 pi)
+  double equation_of_time = 0;   // radians of rotation (true minus mean sun)
+  double mean_solar_time_h = 0;  // MST (coordinated Mars time) at the prime meridian, hours
+  double subsolar_lon_east = 0;  // radians in (-pi, pi]
+  double subsolar_lat = 0;       // planetographic, radians
   double sun_distance_au = 0;
 };
 

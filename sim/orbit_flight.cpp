@@ -23,10 +23,9 @@ void OrbitFlight::place(UtcSeconds utc) {
 
 void OrbitFlight::step(double dt, UtcSeconds utc, const FlightInput& input) {
   glm::dvec3 turn = glm::clamp(input.turn, -1.0, 1.0) * (1.2 * dt);
-  orbital_from_camera_ = glm::normalize(orbital_from_camera_ *
-                                        glm::angleAxis(turn.x, glm::dvec3(1, 0, 0)) *
-                                        glm::angleAxis(turn.y, glm::dvec3(0, 1, 0)) *
-                                        glm::angleAxis(turn.z, glm::dvec3(0, 0, -1)));
+  orbital_from_camera_ = glm::normalize(
+      orbital_from_camera_ * glm::angleAxis(turn.x, glm::dvec3(1, 0, 0)) *
+      glm::angleAxis(turn.y, glm::dvec3(0, 1, 0)) * glm::angleAxis(turn.z, glm::dvec3(0, 0, -1)));
   place(utc);
 }
 

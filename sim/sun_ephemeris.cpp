@@ -39,7 +39,8 @@ EarthSun earth_sun(UtcSeconds utc) {
   const double omega = 125.04 - 1934.136 * t;
   const double lambda = true_longitude - 0.00569 - 0.00478 * deg_sin(omega);
   // Obliquity: mean (eq. 22.2) corrected for nutation (eq. 25.8).
-  const double eps0 = 23.0 + (26.0 + (21.448 - t * (46.8150 + t * (0.00059 - t * 0.001813))) / 60.0) / 60.0;
+  const double eps0 =
+      23.0 + (26.0 + (21.448 - t * (46.8150 + t * (0.00059 - t * 0.001813))) / 60.0) / 60.0;
   const double eps = eps0 + 0.00256 * deg_cos(omega);
   EarthSun sun;
   sun.right_ascension = std::atan2(deg_cos(eps) * deg_sin(lambda), deg_cos(lambda));
@@ -51,10 +52,14 @@ EarthSun earth_sun(UtcSeconds utc) {
 
 std::string SunEphemeris::name() const {
   switch (model) {
-    case Model::kEarth: return "earth";
-    case Model::kMars24: return "mars24";
-    case Model::kCircularOrbit: return "circular_orbit";
-    case Model::kNone: break;
+    case Model::kEarth:
+      return "earth";
+    case Model::kMars24:
+      return "mars24";
+    case Model::kCircularOrbit:
+      return "circular_orbit";
+    case Model::kNone:
+      break;
   }
   return "none";
 }
@@ -112,9 +117,11 @@ glm::dvec3 sun_dir_body(const SunEphemeris& ephemeris, const BodyRotation& rotat
       return glm::normalize(rotation.body_from_inertial(utc) * rotation.inertial_from_icrf() *
                             dir_icrf);
     }
-    case SunEphemeris::Model::kNone: break;
+    case SunEphemeris::Model::kNone:
+      break;
   }
-  throw InputError("the body has no \"ephemeris\": its sun can only be given as elevation and azimuth");
+  throw InputError(
+      "the body has no \"ephemeris\": its sun can only be given as elevation and azimuth");
 }
 
 HorizonAngles horizon_angles(const glm::dvec3& dir_body, double lat, double lon) {

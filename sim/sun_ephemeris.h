@@ -30,8 +30,8 @@ struct SunEphemeris {
   // kCircularOrbit: the body's heliocentric orbit, circular in the J2000
   // ecliptic.
   double orbit_radius_au = 0;
-  double orbit_period = 0;      // seconds
-  double longitude_j2000 = 0;   // heliocentric ecliptic longitude at J2000, radians
+  double orbit_period = 0;     // seconds
+  double longitude_j2000 = 0;  // heliocentric ecliptic longitude at J2000, radians
 
   bool available() const { return model != Model::kNone; }
   std::string name() const;

@@ -7,7 +7,8 @@
 namespace planet {
 
 Geodesics::Geodesics(const Ellipsoid& shape)
-    : geodesic_(std::make_unique<GeographicLib::Geodesic>(shape.equatorial_radius, shape.flattening)) {}
+    : geodesic_(
+          std::make_unique<GeographicLib::Geodesic>(shape.equatorial_radius, shape.flattening)) {}
 Geodesics::~Geodesics() = default;
 
 SurfaceLine Geodesics::between(const Geodetic& from, const Geodetic& to) const {

@@ -14,9 +14,9 @@ class Geodesic;
 namespace planet {
 
 struct SurfaceLine {
-  double distance = 0;        // metres along the ellipsoid
-  double start_heading = 0;   // radians clockwise from north, at the start
-  double end_heading = 0;     // at the end, in the direction of travel
+  double distance = 0;       // metres along the ellipsoid
+  double start_heading = 0;  // radians clockwise from north, at the start
+  double end_heading = 0;    // at the end, in the direction of travel
 };
 
 class Geodesics {

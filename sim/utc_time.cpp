@@ -46,8 +46,8 @@ bool leap_year(long y) { return (y % 4 == 0 && y % 100 != 0) || y % 400 == 0; }
 
 UtcSeconds parse_utc(const std::string& text, const std::string& what) {
   auto fail = [&](const std::string& reason) -> UtcSeconds {
-    throw InputError(fmt::format("{}: '{}' {} (expected UTC as YYYY-MM-DDTHH:MM:SSZ)", what,
-                                 text, reason));
+    throw InputError(
+        fmt::format("{}: '{}' {} (expected UTC as YYYY-MM-DDTHH:MM:SSZ)", what, text, reason));
   };
   int y = 0, mo = 0, d = 0, h = 0, mi = 0, n = 0;
   double s = 0;

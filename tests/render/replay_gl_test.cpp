@@ -30,7 +30,8 @@ TEST(ReplayGLTest, RecordedFlightReplaysByteIdenticalFrames) {
   SimClock clock(parse_utc("2026-06-21T17:40:00Z", "test"));
   clock.set_scale(300.0);
   clock.rebase_to_millisecond();
-  FreeFlight flight(earth, Geodetic{glm::radians(46.55), glm::radians(7.98), 20.0}, glm::radians(250.0));
+  FreeFlight flight(earth, Geodetic{glm::radians(46.55), glm::radians(7.98), 20.0},
+                    glm::radians(250.0));
   const double step = 1.0 / 120.0;
   const double exposure = 6.0;
   FlightRecorder recorder("earth", "raymarch", w, h, 60.0, 10.0, clock.epoch());

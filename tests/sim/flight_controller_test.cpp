@@ -52,7 +52,8 @@ TEST(FlightControllerTest, DivingNeverEntersTheGround) {
 TEST(FlightControllerTest, OrbitKeepsItsRadiusWhileTheBodyTurnsUnder) {
   Body earth = load_body(find_body_file("earth"));
   UtcSeconds t0 = parse_utc("2026-01-01T00:00:00Z", "t");
-  KeplerOrbit orbit = circular_orbit_over(earth, Geodetic{0.0, 0.0, 400.0e3}, glm::radians(51.6), true, t0);
+  KeplerOrbit orbit =
+      circular_orbit_over(earth, Geodetic{0.0, 0.0, 400.0e3}, glm::radians(51.6), true, t0);
   OrbitFlight flight(earth, orbit, t0);
   double r0 = glm::length(flight.camera().pos_body);
   glm::dvec3 start = flight.camera().pos_body;
@@ -62,7 +63,8 @@ TEST(FlightControllerTest, OrbitKeepsItsRadiusWhileTheBodyTurnsUnder) {
   Geodesy geodesy(earth.shape);
   double lon = geodesy.geodetic_from_body(flight.camera().pos_body).lon;
   EXPECT_NEAR(glm::degrees(lon), -360.0 * orbit.period() / earth.rotation.sidereal_period, 1e-6);
-  EXPECT_NEAR(glm::length(flight.camera().pos_body - start), 2 * r0 * std::sin(std::abs(lon) / 2), 1.0);
+  EXPECT_NEAR(glm::length(flight.camera().pos_body - start), 2 * r0 * std::sin(std::abs(lon) / 2),
+              1.0);
   // Speed in the body frame: orbital speed less the ground's turning.
   EXPECT_GT(flight.speed(), 7000.0);
   EXPECT_LT(flight.speed(), 8000.0);

@@ -66,7 +66,8 @@ TEST_F(FlightTimingTest, PositionAndAttitudeAreC1AtKeyframes) {
   const double eps = 1e-5;
   for (size_t i = 1; i + 1 < s.keyframes.size(); ++i) {
     double t = s.keyframes[i].time;
-    Camera before = path.camera_at(t - eps), at = path.camera_at(t), after = path.camera_at(t + eps);
+    Camera before = path.camera_at(t - eps), at = path.camera_at(t),
+           after = path.camera_at(t + eps);
     // Continuity: both sides close to the keyframe.
     EXPECT_LT(glm::length(before.pos_body - at.pos_body), 1.0) << i;
     EXPECT_LT(glm::length(after.pos_body - at.pos_body), 1.0) << i;
@@ -75,8 +76,10 @@ TEST_F(FlightTimingTest, PositionAndAttitudeAreC1AtKeyframes) {
     glm::dvec3 v_left = (before.pos_body - before2.pos_body) / eps;
     glm::dvec3 v_right = (after2.pos_body - after.pos_body) / eps;
     EXPECT_LT(glm::length(v_left - v_right), 1e-3 * glm::length(v_left) + 1e-2) << i;
-    glm::dvec3 w_left = rotation_vector(glm::inverse(before2.body_from_camera) * before.body_from_camera) / eps;
-    glm::dvec3 w_right = rotation_vector(glm::inverse(after.body_from_camera) * after2.body_from_camera) / eps;
+    glm::dvec3 w_left =
+        rotation_vector(glm::inverse(before2.body_from_camera) * before.body_from_camera) / eps;
+    glm::dvec3 w_right =
+        rotation_vector(glm::inverse(after.body_from_camera) * after2.body_from_camera) / eps;
     EXPECT_LT(glm::length(w_left - w_right), 1e-3 * glm::length(w_left) + 1e-4) << i;
     EXPECT_LT(angle_between(before.body_from_camera, at.body_from_camera), 1e-4) << i;
   }
@@ -85,7 +88,8 @@ TEST_F(FlightTimingTest, PositionAndAttitudeAreC1AtKeyframes) {
 TEST_F(FlightTimingTest, AttitudeThroughThePoleDoesNotFlip) {
   // Over the north pole, looking straight down, then along the flight:
   // heading jumps 180 deg across the pole, the camera must not.
-  FlightScript s = load_flight_script(write(script(R"("sun": {"elevation_deg": 20, "azimuth_deg": 0})", R"(
+  FlightScript s =
+      load_flight_script(write(script(R"("sun": {"elevation_deg": 20, "azimuth_deg": 0})", R"(
       {"time": 0, "lat_deg": 89.0, "lon_deg": 0, "height_m": 20000, "heading_deg": 0, "pitch_deg": -60},
       {"time": 4, "lat_deg": 90.0, "lon_deg": 0, "height_m": 20000, "heading_deg": 0, "pitch_deg": -90},
       {"time": 8, "lat_deg": 89.0, "lon_deg": 180, "height_m": 20000, "heading_deg": 180, "pitch_deg": -60})")));
@@ -137,7 +141,8 @@ TEST_F(FlightTimingTest, KeyframeClockDrivesTheSun) {
   FlightPath path(s);
   EXPECT_DOUBLE_EQ(path.utc_at(5.0), parse_utc("2026-06-21T19:30:00Z", "t"));
   double e0 = horizon_angles(path.sun_dir_at(0), glm::radians(48.85), glm::radians(2.35)).elevation;
-  double e1 = horizon_angles(path.sun_dir_at(10), glm::radians(48.85), glm::radians(2.35)).elevation;
+  double e1 =
+      horizon_angles(path.sun_dir_at(10), glm::radians(48.85), glm::radians(2.35)).elevation;
   EXPECT_GT(e0, glm::radians(5.0));
   EXPECT_LT(e1, 0.0);  // Paris sunset is near 19:58 UTC at midsummer
 }
@@ -184,29 +189,42 @@ TEST_F(FlightTimingTest, BadTimesOrbitsAndTargetsAreClearErrors) {
   const std::string key = R"({"time": 0, "lat_deg": 0, "lon_deg": 0, "height_m": 10})";
   expect_error(script(R"("start_utc": "2026-06-31T00:00:00Z")", key), {"start_utc", "2026-06-31"});
   expect_error(script(R"("start_utc": "tomorrow")", key), {"start_utc", "tomorrow", "UTC"});
-  expect_error(script(R"("start_utc": "2026-06-21T00:00:00Z", "sun": {"elevation_deg": 1, "azimuth_deg": 1})", key),
-               {"either", "start_utc", "sun"});
+  expect_error(
+      script(
+          R"("start_utc": "2026-06-21T00:00:00Z", "sun": {"elevation_deg": 1, "azimuth_deg": 1})",
+          key),
+      {"either", "start_utc", "sun"});
   expect_error(script(R"("exposure": 1)", key), {"either"});
-  expect_error(script(R"("sun": {"elevation_deg": 1, "azimuth_deg": 1})",
-                      R"({"time": 0, "lat_deg": 0, "lon_deg": 0, "height_m": 10, "utc": "2026-01-01T00:00:00Z"})"),
-               {"keyframes[0]", "start_utc"});
-  expect_error(script(R"("start_utc": "2026-06-21T00:00:00Z")",
-                      R"({"time": 0, "lat_deg": 60, "lon_deg": 0, "height_m": 400000, "orbit": {"inclination_deg": 30}},
+  expect_error(
+      script(
+          R"("sun": {"elevation_deg": 1, "azimuth_deg": 1})",
+          R"({"time": 0, "lat_deg": 0, "lon_deg": 0, "height_m": 10, "utc": "2026-01-01T00:00:00Z"})"),
+      {"keyframes[0]", "start_utc"});
+  expect_error(
+      script(
+          R"("start_utc": "2026-06-21T00:00:00Z")",
+          R"({"time": 0, "lat_deg": 60, "lon_deg": 0, "height_m": 400000, "orbit": {"inclination_deg": 30}},
                          {"time": 10})"),
-               {"keyframes[0].orbit", "never reaches latitude"});
-  expect_error(script(R"("start_utc": "2026-06-21T00:00:00Z")",
-                      R"({"time": 0, "lat_deg": 0, "lon_deg": 0, "height_m": 400000, "orbit": {"inclination_deg": 30}},
+      {"keyframes[0].orbit", "never reaches latitude"});
+  expect_error(
+      script(
+          R"("start_utc": "2026-06-21T00:00:00Z")",
+          R"({"time": 0, "lat_deg": 0, "lon_deg": 0, "height_m": 400000, "orbit": {"inclination_deg": 30}},
                          {"time": 10, "lat_deg": 1, "lon_deg": 1, "height_m": 1})"),
-               {"keyframes[1].lat_deg", "orbit"});
-  expect_error(script(R"("start_utc": "2026-06-21T00:00:00Z")",
-                      R"({"time": 0, "lat_deg": 0, "lon_deg": 0, "height_m": 400000, "orbit": {"inclination_deg": 30}})"),
-               {"keyframes[0].orbit", "keyframe after"});
+      {"keyframes[1].lat_deg", "orbit"});
+  expect_error(
+      script(
+          R"("start_utc": "2026-06-21T00:00:00Z")",
+          R"({"time": 0, "lat_deg": 0, "lon_deg": 0, "height_m": 400000, "orbit": {"inclination_deg": 30}})"),
+      {"keyframes[0].orbit", "keyframe after"});
   expect_error(script(R"("start_utc": "2026-06-21T00:00:00Z")",
                       R"({"time": 0, "lat_deg": 0, "lon_deg": 0, "height_m": -5000000})"),
                {"keyframes[0].height_m", "out of range"});
-  expect_error(script(R"("start_utc": "2026-06-21T00:00:00Z")",
-                      R"({"time": 0, "lat_deg": 0, "lon_deg": 0, "height_m": 0, "look_at": {"lat_deg": 0, "lon_deg": 0}})"),
-               {"keyframes[0].look_at", "where the camera is"});
+  expect_error(
+      script(
+          R"("start_utc": "2026-06-21T00:00:00Z")",
+          R"({"time": 0, "lat_deg": 0, "lon_deg": 0, "height_m": 0, "look_at": {"lat_deg": 0, "lon_deg": 0}})"),
+      {"keyframes[0].look_at", "where the camera is"});
 }
 
 TEST_F(FlightTimingTest, ShippedFlightsStayAboveGroundAndShowWhatTheyPromise) {

@@ -1,7 +1,7 @@
 // Two-body propagation: conserved quantities and Kepler's third law.
+#include "sim/kepler.h"
 #include "sim/body.h"
 #include "sim/error.h"
-#include "sim/kepler.h"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/constants.hpp>
@@ -33,7 +33,8 @@ TEST(KeplerTest, EnergyAndAngularMomentumHoldOverTenOrbits) {
     for (int i = 1; i <= 997; ++i) {
       double t = 10.0 * period * i / 997.0;
       StateVector s = orbit.state_at(t);
-      ASSERT_LT(relative_drift(energy0, orbital_energy(s, kMuEarth)), 1e-9) << "e=" << e << " t=" << t;
+      ASSERT_LT(relative_drift(energy0, orbital_energy(s, kMuEarth)), 1e-9)
+          << "e=" << e << " t=" << t;
       ASSERT_LT(glm::length(angular_momentum(s) - h0) / glm::length(h0), 1e-9) << "e=" << e;
     }
     // After whole periods the body is back where it started.

@@ -1,7 +1,7 @@
 // Mars24 against the worked example A of NASA GISS's "Mars24 Algorithm and
 // Worked Examples" (2000 January 6, 00:00:00 UTC, at longitude 0).
-#include "sim/body.h"
 #include "sim/mars24.h"
+#include "sim/body.h"
 #include "sim/sun_ephemeris.h"
 
 #include <gtest/gtest.h>
@@ -18,10 +18,10 @@ TEST(Mars24Test, MatchesPublishedWorkedExample) {
   EXPECT_DOUBLE_EQ(tt_minus_utc(utc), 64.184);
   MarsSun sun = mars_sun(utc);
   // The example prints five decimals; allow one unit in the last place.
-  EXPECT_NEAR(glm::degrees(sun.ls), 277.18758, 1e-5);                       // B-5
-  EXPECT_NEAR(glm::degrees(sun.equation_of_time), -5.18774, 1e-5);          // C-1
-  EXPECT_NEAR(sun.mean_solar_time_h, 23.99425, 1e-5);                       // C-2
-  EXPECT_NEAR(mars_local_true_solar_time_h(sun, 0.0), 23.64840, 1e-5);      // C-4
+  EXPECT_NEAR(glm::degrees(sun.ls), 277.18758, 1e-5);                   // B-5
+  EXPECT_NEAR(glm::degrees(sun.equation_of_time), -5.18774, 1e-5);      // C-1
+  EXPECT_NEAR(sun.mean_solar_time_h, 23.99425, 1e-5);                   // C-2
+  EXPECT_NEAR(mars_local_true_solar_time_h(sun, 0.0), 23.64840, 1e-5);  // C-4
   // C-5: subsolar longitude 174.72600 deg west.
   EXPECT_NEAR(-glm::degrees(sun.subsolar_lon_east), 174.72600, 1e-5);
   // D-1 applied to the published Ls: asin(0.42565 sin Ls) + 0.25 deg sin Ls.

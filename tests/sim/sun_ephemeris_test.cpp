@@ -1,8 +1,8 @@
 // Earth's sun against independent references: Meeus's worked examples and
 // a second, independently fitted algorithm (PSA, Blanco-Muriel et al. 2001).
+#include "sim/sun_ephemeris.h"
 #include "sim/body.h"
 #include "sim/error.h"
-#include "sim/sun_ephemeris.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -26,7 +26,8 @@ HorizonAngles psa(int year, int month, int day, double hours, double lat_deg, do
   double pi = glm::pi<double>();
   long a = (month - 14) / 12;
   double jd = double((1461 * (year + 4800 + a)) / 4 + (367 * (month - 2 - 12 * a)) / 12 -
-                     (3 * ((year + 4900 + a) / 100)) / 4 + day) - 32075 - 0.5 + hours / 24.0;
+                     (3 * ((year + 4900 + a) / 100)) / 4 + day) -
+              32075 - 0.5 + hours / 24.0;
   double n = jd - 2451545.0;
   double omega = 2.1429 - 0.0010394594 * n;
   double mean_lon = 4.8950630 + 0.017202791698 * n;
@@ -41,9 +42,10 @@ HorizonAngles psa(int year, int month, int day, double hours, double lat_deg, do
   double lmst = glm::radians(gmst * 15.0 + lon_deg);
   double ha = lmst - ra;
   double lat = glm::radians(lat_deg);
-  double zenith = std::acos(std::cos(lat) * std::cos(ha) * std::cos(dec) +
-                            std::sin(dec) * std::sin(lat));
-  double azimuth = std::atan2(-std::sin(ha), std::tan(dec) * std::cos(lat) - std::sin(lat) * std::cos(ha));
+  double zenith =
+      std::acos(std::cos(lat) * std::cos(ha) * std::cos(dec) + std::sin(dec) * std::sin(lat));
+  double azimuth =
+      std::atan2(-std::sin(ha), std::tan(dec) * std::cos(lat) - std::sin(lat) * std::cos(ha));
   if (azimuth < 0) azimuth += 2 * pi;
   zenith += (6371.01 / 149597890.0) * std::sin(zenith);  // parallax
   return {glm::radians(90.0) - zenith, azimuth};
@@ -79,14 +81,14 @@ TEST(SunEphemerisTest, EarthAgreesWithIndependentAlgorithmWithinOneArcMinute) {
   // Dates across the PSA's validity, places on all sides of the globe, the
   // sun high, low, east, west, and under the horizon.
   const Case cases[] = {
-      {1999, 3, 21, 12.0, 48.85, 2.35},   {2003, 6, 21, 6.5, 37.77, -122.42},
+      {1999, 3, 21, 12.0, 48.85, 2.35},     {2003, 6, 21, 6.5, 37.77, -122.42},
       {2006, 12, 22, 3.25, -33.87, 151.21}, {2010, 9, 23, 18.0, 64.15, -21.94},
-      {2012, 1, 15, 9.75, 0.0, 36.8},     {2014, 7, 4, 21.5, -54.8, -68.3},
-      {2015, 11, 30, 15.0, 78.2, 15.6},   {2008, 2, 29, 0.0, 35.68, 139.69},
+      {2012, 1, 15, 9.75, 0.0, 36.8},       {2014, 7, 4, 21.5, -54.8, -68.3},
+      {2015, 11, 30, 15.0, 78.2, 15.6},     {2008, 2, 29, 0.0, 35.68, 139.69},
   };
   for (const Case& c : cases) {
-    UtcSeconds utc = parse_utc(fmt::format("{:04d}-{:02d}-{:02d}", c.y, c.m, c.d), "test") +
-                     c.hours * 3600.0;
+    UtcSeconds utc =
+        parse_utc(fmt::format("{:04d}-{:02d}-{:02d}", c.y, c.m, c.d), "test") + c.hours * 3600.0;
     HorizonAngles ours = horizon_angles(sun_dir_body(earth.ephemeris, earth.rotation, utc),
                                         glm::radians(c.lat), glm::radians(c.lon));
     HorizonAngles ref = psa(c.y, c.m, c.d, c.hours, c.lat, c.lon);

@@ -1,6 +1,6 @@
 // Geodesics on the WGS84 ellipsoid against closed forms and published values.
-#include "sim/body.h"
 #include "sim/surface_line.h"
+#include "sim/body.h"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/constants.hpp>

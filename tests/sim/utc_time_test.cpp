@@ -1,5 +1,5 @@
-#include "sim/error.h"
 #include "sim/utc_time.h"
+#include "sim/error.h"
 
 #include <gtest/gtest.h>
 
@@ -24,8 +24,9 @@ TEST(UtcTimeTest, FormatRoundTrips) {
 }
 
 TEST(UtcTimeTest, MalformedTimesAreInputErrorsNamingTheField) {
-  for (const char* text : {"", "2026-13-01T00:00:00Z", "2026-02-29T00:00:00Z", "2026-06-21T25:00:00Z",
-                           "2026-06-21T12:00:00", "noon", "2026-06-21T12:00:61Z", "2026/06/21"}) {
+  for (const char* text :
+       {"", "2026-13-01T00:00:00Z", "2026-02-29T00:00:00Z", "2026-06-21T25:00:00Z",
+        "2026-06-21T12:00:00", "noon", "2026-06-21T12:00:61Z", "2026/06/21"}) {
     try {
       parse_utc(text, "--time");
       ADD_FAILURE() << "no error for '" << text << "'";
