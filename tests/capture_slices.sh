@@ -26,10 +26,14 @@ set -e
 [ "$rc" -eq 2 ] || { echo "FAIL: slice outside the flight gave exit $rc"; exit 1; }
 grep -q "outside the flight" "$work/bad.txt" || { echo "FAIL: no message"; cat "$work/bad.txt"; exit 1; }
 
-# Interrupt after the first frame is complete, in a longer flight (81 frames).
-sed 's/"frame_rate": *[0-9.]*/"frame_rate": 4/' "$flight" > "$work/long.json"
+# Interrupt after the first frame is complete, in a longer flight (41
+# frames) whose sun follows a clock.
+sed -e 's/"frame_rate": *[0-9.]*/"frame_rate": 2/' \
+    -e 's/"sun": *{[^}]*}/"start_utc": "2026-06-21T06:00:00Z"/' "$flight" > "$work/long.json"
 flight="$work/long.json"
 "$planet" capture --flight "$flight" --out "$work/whole" --quiet
+grep -q '"utc": "2026-06-21T06:00:05.000Z"' "$work/whole/frame_00010.json" ||
+  { echo "FAIL: frame 10 (5 s in) has no UTC in its sidecar"; cat "$work/whole/frame_00010.json"; exit 1; }
 "$planet" capture --flight "$flight" --out "$work/cut" --quiet 2> "$work/cut.txt" &
 pid=$!
 for _ in $(seq 1 600); do
