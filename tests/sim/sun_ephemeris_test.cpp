@@ -112,6 +112,25 @@ TEST(SunEphemerisTest, ParisAtMidsummerNoonIsHighInTheSouth) {
   EXPECT_LT(glm::degrees(a.azimuth), 190.0);
 }
 
+TEST(SunEphemerisTest, AsteroidSunTurnsWithItsSpinAndCreepsWithItsOrbit) {
+  Body rock = load_body(find_body_file("asteroid"));
+  UtcSeconds t0 = parse_utc("2026-06-21T00:00:00Z", "test");
+  double period = rock.rotation.sidereal_period;
+  glm::dvec3 s0 = sun_dir_body(rock.ephemeris, rock.rotation, t0);
+  // Half a turn later the sun has swung to the other side of the pole axis.
+  glm::dvec3 s_half = sun_dir_body(rock.ephemeris, rock.rotation, t0 + 0.5 * period);
+  EXPECT_NEAR(s_half.z, s0.z, 1e-3);
+  EXPECT_NEAR(s_half.x, -s0.x, 1e-2);
+  EXPECT_NEAR(s_half.y, -s0.y, 1e-2);
+  // After a whole sidereal turn only the orbit has moved it: 360 deg times
+  // the turn over the orbital period, projected on the sky.
+  glm::dvec3 s1 = sun_dir_body(rock.ephemeris, rock.rotation, t0 + period);
+  double moved = glm::degrees(std::acos(std::min(1.0, glm::dot(s0, s1))));
+  double orbital = 360.0 * period / rock.ephemeris.orbit_period;
+  EXPECT_GT(moved, 0.3 * orbital);
+  EXPECT_LT(moved, 1.01 * orbital);
+}
+
 TEST(SunEphemerisTest, BodyWithoutEphemerisIsAnInputError) {
   SunEphemeris none;
   EXPECT_THROW(sun_dir_body(none, BodyRotation{}, 0.0), InputError);
