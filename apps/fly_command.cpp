@@ -144,6 +144,8 @@ class FlySession {
   // A new body: the pilot starts over the start place (a few km up unless
   // it came from the command line).
   void load(const std::string& name, bool from_args) {
+    // A recording holds one body: it ends where the body changes.
+    if (recorder_) toggle_recording();
     Body body = load_body(find_body_file(name));
     attach(body);
     body_ = body;
@@ -295,9 +297,12 @@ class FlySession {
     // Time of day: moves the clock within the current UTC day.
     double day_start = std::floor((clock_.utc() + 43200.0) / 86400.0) * 86400.0 - 43200.0;
     float hours = float((clock_.utc() - day_start) / 3600.0);
+    // Not while recording: the recorded clock must run on without jumps.
+    ImGui::BeginDisabled(recorder_ != nullptr || scripted_ != nullptr);
     if (ImGui::SliderFloat("time of day (UTC h)", &hours, 0.0f, 24.0f, "%.2f")) {
       clock_.set(day_start + double(hours) * 3600.0);
     }
+    ImGui::EndDisabled();
     int scale_index = 0;
     for (size_t i = 0; i < kTimeScales.size(); ++i) {
       if (clock_.scale() == kTimeScales[i]) scale_index = int(i);

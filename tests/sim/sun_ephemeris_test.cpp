@@ -9,6 +9,10 @@
 #include <glm/gtc/constants.hpp>
 
 #include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <unistd.h>
 
 namespace planet {
 namespace {
@@ -129,6 +133,33 @@ TEST(SunEphemerisTest, AsteroidSunTurnsWithItsSpinAndCreepsWithItsOrbit) {
   double orbital = 360.0 * period / rock.ephemeris.orbit_period;
   EXPECT_GT(moved, 0.3 * orbital);
   EXPECT_LT(moved, 1.01 * orbital);
+}
+
+TEST(SunEphemerisTest, BadRotationAndEphemerisKeysNameTheField) {
+  auto file = std::filesystem::temp_directory_path() /
+              ("planet_body_" + std::to_string(::getpid()) + ".json");
+  auto expect_error = [&](const std::string& keys, const std::string& fragment) {
+    std::ofstream(file)
+        << R"({"name": "B", "shape": {"type": "ellipsoid", "equatorial_radius_m": 1000},)" << keys
+        << "}";
+    try {
+      load_body(file);
+      ADD_FAILURE() << "no error for " << keys;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(fragment), std::string::npos) << e.what();
+    }
+  };
+  const std::string spin =
+      R"("rotation": {"pole_ra_deg": 0, "pole_dec_deg": 90, "prime_meridian_j2000_deg": 0, )";
+  expect_error(R"("ephemeris": {"model": "earth"})", "ephemeris");
+  expect_error(spin + R"("sidereal_period_s": 0}, "ephemeris": {"model": "earth"})",
+               "rotation.sidereal_period_s");
+  expect_error(spin + R"("sidereal_period_s": 3600}, "ephemeris": {"model": "vsop87"})",
+               "ephemeris.model");
+  expect_error(R"("rotation": {"pole_ra_deg": 0, "pole_dec_deg": 91, "prime_meridian_j2000_deg": 0,
+                 "sidereal_period_s": 3600})",
+               "rotation.pole_dec_deg");
+  std::filesystem::remove(file);
 }
 
 TEST(SunEphemerisTest, BodyWithoutEphemerisIsAnInputError) {
