@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
 #include <string>
 
@@ -58,7 +59,13 @@ void run(const CaptureArgs& args) {
                  script.body.name.c_str(), script.width, script.height, script.frame_count(),
                  script.frame_rate, script.technique.c_str(), context->renderer().c_str());
   }
-  CaptureResult result = run_capture(script, options);
+  CaptureResult result;
+  try {
+    result = run_capture(script, options);
+  } catch (const CaptureInterrupted& e) {
+    std::fprintf(stderr, "planet: %s\n", e.what());
+    std::exit(130);  // as a shell reports a program stopped by SIGINT
+  }
   std::printf("captured %d frames in %.1f s into %s (first %s, last %s)\n", result.frames,
               result.wall_seconds, options.out_dir.string().c_str(),
               result.first_png.filename().string().c_str(),
@@ -71,8 +78,7 @@ void add_capture_command(CLI::App& app) {
   auto args = std::make_shared<CaptureArgs>();
   CLI::App* cmd =
       app.add_subcommand("capture", "Render a scripted flight headless into EXR + PNG frames");
-  cmd->add_option("--flight", args->flight_file, "Flight script (data/flights/*.json)")
-      ->required();
+  cmd->add_option("--flight", args->flight_file, "Flight script (data/flights/*.json)")->required();
   cmd->add_option("--out", args->out_dir, "Output folder (default out/<flight name>)");
   cmd->add_option("--frames", args->frames, "Slice of frames A:B to render (B exclusive)");
   cmd->add_flag("--quiet", args->quiet, "No progress output");

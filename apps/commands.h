@@ -15,5 +15,7 @@ void add_reference_command(CLI::App& app);
 CLI::App& add_probe_command(CLI::App& app);
 // `planet probe transmittance` and `planet probe sky`.
 void add_probe_atmosphere_commands(CLI::App& probe);
+void add_fly_command(CLI::App& app);
+void add_probe_sun_command(CLI::App& probe);
 
 }  // namespace planet::apps

@@ -10,22 +10,28 @@
 
 #include <glm/gtc/constants.hpp>
 
-#include <chrono>
-#include <algorithm>
-#include <cstdio>
 #include <unistd.h>
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
 
 namespace planet {
 
 namespace {
 
-nlohmann::json sidecar(const FlightScript& script, const Geodesy& geodesy, int frame, double t,
-                       const Camera& camera, double exposure, const FrameStats& stats) {
+// Set by SIGINT: the frame in progress is finished, then the capture stops.
+volatile std::sig_atomic_t g_interrupted = 0;
+extern "C" void on_interrupt(int) { g_interrupted = 1; }
+
+nlohmann::json sidecar(const FlightScript& script, const FlightPath& path, const Geodesy& geodesy,
+                       int frame, double t, const Camera& camera, double exposure,
+                       const glm::dvec3& sun, const FrameStats& stats) {
   Geodetic g = geodesy.geodetic_from_body(camera.pos_body);
   nlohmann::json passes = nlohmann::json::object();
   for (const auto& p : stats.passes) passes[p.pass] = p.gpu_ms;
   const glm::dquat& q = camera.body_from_camera;
-  return {
+  nlohmann::json j = {
       {"frame", frame},
       {"time_s", t},
       {"body", script.body.name},
@@ -36,12 +42,14 @@ nlohmann::json sidecar(const FlightScript& script, const Geodesy& geodesy, int f
         {"height_m", g.height},
         {"body_from_camera_wxyz", {q.w, q.x, q.y, q.z}},
         {"vertical_fov_deg", glm::degrees(camera.vertical_fov)}}},
-      {"sun_dir_body", {script.sun_dir_body.x, script.sun_dir_body.y, script.sun_dir_body.z}},
+      {"sun_dir_body", {sun.x, sun.y, sun.z}},
       {"technique", script.technique},
       {"exposure", exposure},
       {"image", {{"width", script.width}, {"height", script.height}}},
       {"gpu_ms", passes},
   };
+  if (script.has_clock) j["utc"] = format_utc(path.utc_at(t));
+  return j;
 }
 
 // On a terminal, one line rewritten in place; in a log, a line per tenth.
@@ -91,17 +99,29 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
   Geodesy geodesy(script.body.shape);
 
   CaptureResult result;
+  g_interrupted = 0;
+  auto previous_handler = std::signal(SIGINT, on_interrupt);
   auto start = std::chrono::steady_clock::now();
   for (int frame = first; frame < end; ++frame) {
+    if (g_interrupted) {
+      std::signal(SIGINT, previous_handler);
+      if (options.progress && isatty(fileno(stderr))) std::fprintf(stderr, "\n");
+      throw CaptureInterrupted(
+          fmt::format("interrupted: frames {} to {} are complete in {}; resume with --frames {}:{}",
+                      first, frame - 1, options.out_dir.string(), frame,
+                      end == total ? std::string() : std::to_string(end)));
+    }
     double t = script.frame_time(frame);
     Camera camera = path.camera_at(t);
     double exposure = path.exposure_at(t);
-    FrameStats stats = renderer.render(camera, script.sun_dir_body, exposure);
+    glm::dvec3 sun = path.sun_dir_at(t);
+    FrameStats stats = renderer.render(camera, sun, exposure);
     std::string stem = fmt::format("frame_{:05d}", frame);
     write_exr(options.out_dir / (stem + ".exr"), script.width, script.height, renderer.read_hdr());
     write_png(options.out_dir / (stem + ".png"), script.width, script.height, renderer.read_ldr());
-    write_text_file(options.out_dir / (stem + ".json"),
-                    sidecar(script, geodesy, frame, t, camera, exposure, stats).dump(2) + "\n");
+    write_text_file(
+        options.out_dir / (stem + ".json"),
+        sidecar(script, path, geodesy, frame, t, camera, exposure, sun, stats).dump(2) + "\n");
     if (frame == first) result.first_png = options.out_dir / (stem + ".png");
     result.last_png = options.out_dir / (stem + ".png");
     ++result.frames;
@@ -120,6 +140,7 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
       {"wall_seconds", result.wall_seconds},
   };
   write_text_file(finished_marker, summary.dump(2) + "\n");
+  std::signal(SIGINT, previous_handler);
   return result;
 }
 

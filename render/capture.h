@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <stdexcept>
 
 namespace planet {
 
@@ -24,7 +25,15 @@ struct CaptureResult {
   std::filesystem::path first_png, last_png;
 };
 
-// Needs a current GL context.
+// Ctrl-C during a capture: the frame in progress is finished and written,
+// then this is thrown with the frames done and the --frames to resume with.
+class CaptureInterrupted : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Needs a current GL context. Each frame's sidecar JSON is written after its
+// images, so a frame with a sidecar is complete.
 CaptureResult run_capture(const FlightScript& script, const CaptureOptions& options);
 
 }  // namespace planet

@@ -18,7 +18,7 @@ packages=(
   # tests and benchmarks
   libgtest-dev libgmock-dev libbenchmark-dev
   # the interactive program's test runs a real window under a virtual display
-  xvfb xauth
+  xvfb xauth xdotool
 )
 
 missing=()

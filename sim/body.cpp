@@ -24,6 +24,18 @@ Body load_body(const std::filesystem::path& file) {
   shape.finish();
 
   if (root.has("atmosphere")) body.atmosphere = root.raw("atmosphere");
+  body.gm = root.number_or("gm_m3_s2", 0.0, 0.0, 1e22);
+  if (root.has("rotation")) {
+    body.rotation = parse_rotation(root.object("rotation"));
+    body.has_rotation = true;
+  }
+  if (root.has("ephemeris")) {
+    body.ephemeris = parse_ephemeris(root.object("ephemeris"));
+    // Only Mars24 gives the sun in the body frame by itself.
+    if (!body.has_rotation && body.ephemeris.model != SunEphemeris::Model::kMars24) {
+      root.fail("ephemeris", "needs the body's \"rotation\" to turn the sun into the body frame");
+    }
+  }
   root.finish();
   return body;
 }

@@ -1,7 +1,9 @@
 #pragma once
 // A celestial body as the simulation sees it: its name, its shape and the
 // parts of its file that other modules read (the atmosphere).
+#include "sim/body_rotation.h"
 #include "sim/json_reader.h"
+#include "sim/sun_ephemeris.h"
 
 #include <nlohmann/json.hpp>
 
@@ -24,6 +26,14 @@ struct Body {
   // The "atmosphere" object of the body's file, parsed by the atmosphere
   // module; null for an airless body.
   nlohmann::json atmosphere;
+  // Gravitational parameter GM, m^3 s^-2; 0 when the file gives none (no
+  // orbits then).
+  double gm = 0;
+  // The spin; a body without "rotation" does not turn.
+  BodyRotation rotation;
+  bool has_rotation = false;
+  // Where its sun is at a given time; none: scripts give the sun by hand.
+  SunEphemeris ephemeris;
 
   bool has_atmosphere() const { return !atmosphere.is_null(); }
 };

@@ -3,12 +3,16 @@
 // time, a sun, and how to capture it. Sampling is a pure function of time,
 // and capture samples at fixed steps of 1/frame_rate, so every run of a
 // script yields the same cameras.
+#include "sim/attitude_curve.h"
 #include "sim/body.h"
 #include "sim/camera.h"
 #include "sim/geodesy.h"
 #include "sim/interpolation.h"
+#include "sim/kepler.h"
+#include "sim/utc_time.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -18,7 +22,15 @@ struct Keyframe {
   double time = 0;  // seconds from the start of the flight
   Geodetic place;
   double heading = 0, pitch = 0, roll = 0;  // radians, see enu_from_camera
-  double exposure = 1;  // the script's unless the keyframe gives its own
+  double exposure = 1;                      // the script's unless the keyframe gives its own
+  // Resolved at load: the camera's attitude (from heading/pitch/roll, a
+  // look-at target or a recorded quaternion) and its exact body position.
+  glm::dquat body_from_camera{1, 0, 0, 0};
+  glm::dvec3 pos_body{0.0};
+  // The clock at this keyframe (scripts with "start_utc" only).
+  UtcSeconds utc = 0;
+  // From this keyframe to the next the camera rides this orbit.
+  std::optional<KeplerOrbit> orbit;
 };
 
 struct FlightScript {
@@ -35,6 +47,11 @@ struct FlightScript {
   double frame_rate = 0;
   double exposure = 1;  // multiplies radiance before tone mapping; the default for keyframes
   std::string technique = "raymarch";
+  // With "start_utc" the sun follows the body's ephemeris and the clock
+  // (keyframes may set it with "utc" or "clock_s"); without it, the fixed
+  // "sun" block holds.
+  bool has_clock = false;
+  UtcSeconds start_utc = 0;
 
   double duration() const { return keyframes.back().time - keyframes.front().time; }
   // Frames at t = start + i / frame_rate for every such time in the flight.
@@ -53,11 +70,19 @@ class FlightPath {
   Geodetic place_at(double time) const;
   // Interpolated in log space, so a 10x change takes as long up as down.
   double exposure_at(double time) const;
+  // UTC at a time of the flight: linear between keyframes that set the
+  // clock, one second per second elsewhere.
+  UtcSeconds utc_at(double time) const;
+  glm::dvec3 sun_dir_at(double time) const;
 
  private:
+  size_t orbit_segment(double time) const;  // keyframe index, or npos
+  Geodetic place_on_orbit(const KeplerOrbit& orbit, UtcSeconds utc) const;
+
   const FlightScript* script_;
   Geodesy geodesy_;
-  MonotoneCubic lat_, lon_, height_, heading_, pitch_, roll_, log_exposure_;
+  MonotoneCubic lat_, lon_, height_, log_exposure_;
+  AttitudeCurve attitude_;
 };
 
 }  // namespace planet

@@ -15,6 +15,9 @@ class MonotoneCubic {
 
   double operator()(double t) const;
   double derivative(double t) const;
+  // Prescribes the slope at knot i, where the curve must join another one
+  // (an orbit) with its velocity: C1 is kept, monotonicity may not be.
+  void set_slope(size_t i, double slope) { m_.at(i) = slope; }
 
  private:
   size_t segment(double t) const;

@@ -1,0 +1,51 @@
+#include "sim/flight_recorder.h"
+
+#include "sim/error.h"
+
+#include <fmt/format.h>
+
+#include <fstream>
+
+namespace planet {
+
+FlightRecorder::FlightRecorder(std::string body, std::string technique, int width, int height,
+                               double vertical_fov_deg, double frame_rate, UtcSeconds start)
+    : frame_rate_(frame_rate) {
+  script_ = {
+      {"body", body},
+      {"image", {{"width", width}, {"height", height}}},
+      {"frame_rate", frame_rate},
+      {"vertical_fov_deg", vertical_fov_deg},
+      {"technique", technique},
+      {"start_utc", format_utc(start)},
+      {"keyframes", nlohmann::json::array()},
+  };
+}
+
+void FlightRecorder::add(const Camera& camera, double clock_s, double exposure) {
+  const glm::dquat& q = camera.body_from_camera;
+  script_["keyframes"].push_back({
+      {"time", next_frame_time()},
+      {"position_body_m", {camera.pos_body.x, camera.pos_body.y, camera.pos_body.z}},
+      {"body_from_camera_wxyz", {q.w, q.x, q.y, q.z}},
+      {"clock_s", clock_s},
+      {"exposure", exposure},
+  });
+  ++frames_;
+}
+
+nlohmann::json FlightRecorder::script() const {
+  nlohmann::json s = script_;
+  // A script needs an exposure; the keyframes carry their own.
+  s["exposure"] = frames_ > 0 ? s["keyframes"][0]["exposure"] : nlohmann::json(1.0);
+  return s;
+}
+
+void FlightRecorder::write(const std::filesystem::path& file) const {
+  if (frames_ == 0) throw InputError("nothing recorded");
+  std::ofstream out(file);
+  out << script().dump(2) << "\n";
+  if (!out) throw SystemError(fmt::format("{}: cannot write the recorded flight", file.string()));
+}
+
+}  // namespace planet

@@ -1,0 +1,41 @@
+#pragma once
+// Free flight: six degrees of freedom in the body-fixed frame, speed scaled
+// with the height above the surface (0.2 m/s per metre of height:
+// centimetres per second at the ground, thousands of km per second far
+// out), never below a clearance above the surface.
+#include "sim/flight_controller.h"
+#include "sim/geodesy.h"
+
+#include <functional>
+
+namespace planet {
+
+class FreeFlight : public FlightController {
+ public:
+  // Starts at `place`, looking along `heading` (radians), level.
+  FreeFlight(const Body& body, const Geodetic& place, double heading);
+  FreeFlight(const Body& body, const Camera& camera);
+
+  void step(double dt, UtcSeconds utc, const FlightInput& input) override;
+  Camera camera() const override { return camera_; }
+  double speed() const override { return speed_; }
+
+  // The surface's height above the ellipsoid at a place (0 until a terrain
+  // gives one).
+  void set_ground(std::function<double(const Geodetic&)> ground) { ground_ = std::move(ground); }
+  double height_above_ground() const;
+
+  static constexpr double kClearance = 0.5;       // metres above the surface
+  static constexpr double kSpeedPerHeight = 0.2;  // per second
+  static constexpr double kMinSpeed = 0.02;       // metres per second
+  static constexpr double kMaxSpeed = 5.0e6;      // metres per second
+  static constexpr double kTurnRate = 1.2;        // radians per second at full input
+
+ private:
+  Geodesy geodesy_;
+  Camera camera_;
+  double speed_ = 0;
+  std::function<double(const Geodetic&)> ground_;
+};
+
+}  // namespace planet
