@@ -56,6 +56,11 @@ Segment atmosphere_segment(const Medium& m, const glm::dvec3& o, const glm::dvec
 
 double altitude_of(const Medium& m, const glm::dvec3& p) { return glm::length(p) - m.bottom_radius; }
 
+// The least probability of a next-event estimate at a tentative collision.
+constexpr double kMinGather = 0.25;
+// Below this ratio-tracked transmittance, tracking goes on by roulette.
+constexpr double kRouletteBelow = 0.01;
+
 double free_flight(double majorant, Rng& rng) { return -std::log1p(-rng.uniform()) / majorant; }
 
 }  // namespace
@@ -68,6 +73,10 @@ double ratio_tracking_transmittance(const Medium& m, const MediumChannel& c,
   double transmittance = 1.0;
   for (double t = s.t0 + free_flight(c.majorant, rng); t < s.t1; t += free_flight(c.majorant, rng)) {
     transmittance *= 1.0 - m.at(c, altitude_of(m, origin + t * dir)).extinction() / c.majorant;
+    if (transmittance < kRouletteBelow) {
+      if (rng.uniform() * kRouletteBelow >= transmittance) return 0.0;
+      transmittance = kRouletteBelow;
+    }
   }
   return transmittance;
 }
@@ -109,13 +118,20 @@ double trace_path(const Medium& m, const MediumChannel& c, glm::dvec3 origin, gl
     for (double t = s.t0 + free_flight(majorant, rng); t < s.t1; t += free_flight(majorant, rng)) {
       glm::dvec3 p = origin + t * dir;
       Medium::Coefficients k = m.at(c, altitude_of(m, p));
-      if (options.sun && rng.uniform() * majorant < k.scattering()) {
+      // The estimate's weight at this point is sigma_s / majorant; it is
+      // taken with probability q = max(sigma_s / majorant, kMinGather) and
+      // divided by q, so that thin air high up (where sigma_s / majorant
+      // is tiny but the sun still shines at twilight) is not left to rare
+      // lucky samples.
+      double gather = k.scattering() / majorant;
+      double q = std::max(gather, kMinGather);
+      if (options.sun && gather > 0.0 && rng.uniform() < q) {
         bool rayleigh = rng.uniform() * k.scattering() < k.scattering_rayleigh;
         glm::dvec3 to_sun = reference::sample_cone(sun_dir, cos_alpha, rng);
         double nu = glm::dot(dir, to_sun);
         double phase = rayleigh ? shared::rayleigh_phase(nu)
                                 : shared::cornette_shanks_phase(m.mie_g, nu);
-        radiance += transmittance * c.solar_irradiance * phase *
+        radiance += transmittance * gather / q * c.solar_irradiance * phase *
                     ratio_tracking_transmittance(m, c, p, to_sun, rng);
       }
       if (!decided) {
@@ -130,6 +146,17 @@ double trace_path(const Medium& m, const MediumChannel& c, glm::dvec3 origin, gl
       }
       transmittance *= 1.0 - k.extinction() / majorant;
       if (decided && !options.sun) break;  // nothing more to gather here
+      // Russian roulette on the gathering weight: in dense air the
+      // segment's far part, behind an optical depth of many, is worth a
+      // few tries, not thousands of collisions (unbiased: survivors are
+      // reweighted).
+      if (decided && transmittance < kRouletteBelow) {
+        if (rng.uniform() * kRouletteBelow >= transmittance) {
+          transmittance = 0.0;  // nothing reaches the segment's end either
+          break;
+        }
+        transmittance = kRouletteBelow;
+      }
     }
     glm::dvec3 end = origin + s.t1 * dir;
     glm::dvec3 normal = glm::normalize(end);
