@@ -19,8 +19,13 @@ namespace planet {
 
 namespace {
 
+// Generous: the deepest view (2 m above mountains) builds a few hundred
+// tiles, seconds on one core.
+constexpr double kTerrainWaitSeconds = 300.0;
+
 nlohmann::json sidecar(const FlightScript& script, const Geodesy& geodesy, int frame, double t,
-                       const Camera& camera, double exposure, const FrameStats& stats) {
+                       const Camera& camera, double exposure, const FrameStats& stats,
+                       const TerrainStats& terrain) {
   Geodetic g = geodesy.geodetic_from_body(camera.pos_body);
   nlohmann::json passes = nlohmann::json::object();
   for (const auto& p : stats.passes) passes[p.pass] = p.gpu_ms;
@@ -41,6 +46,13 @@ nlohmann::json sidecar(const FlightScript& script, const Geodesy& geodesy, int f
       {"exposure", exposure},
       {"image", {{"width", script.width}, {"height", script.height}}},
       {"gpu_ms", passes},
+      {"terrain",
+       {{"tiles_drawn", terrain.tiles_drawn},
+        {"triangles", terrain.triangles},
+        {"tiles_resident", terrain.tiles_resident},
+        {"bytes_resident", terrain.bytes_resident},
+        {"max_error_px", terrain.max_error_px},
+        {"deepest_level", terrain.max_level}}},
   };
 }
 
@@ -85,6 +97,9 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
   std::filesystem::remove(finished_marker);
 
   FrameRenderer renderer(script.width, script.height);
+  // A capture draws every tile the view needs at its level: frames must
+  // not depend on how fast tiles happened to be built.
+  renderer.set_terrain_wait(kTerrainWaitSeconds);
   renderer.set_body(script.body, atmosphere, std::move(technique));
   FlightPath path(script);
   Geodesy geodesy(script.body.shape);
@@ -100,7 +115,8 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
     write_exr(options.out_dir / (stem + ".exr"), script.width, script.height, renderer.read_hdr());
     write_png(options.out_dir / (stem + ".png"), script.width, script.height, renderer.read_ldr());
     write_text_file(options.out_dir / (stem + ".json"),
-                    sidecar(script, geodesy, frame, t, camera, exposure, stats).dump(2) + "\n");
+                    sidecar(script, geodesy, frame, t, camera, exposure, stats,
+                            renderer.terrain_stats()).dump(2) + "\n");
     if (frame == first) result.first_png = options.out_dir / (stem + ".png");
     result.last_png = options.out_dir / (stem + ".png");
     ++result.frames;

@@ -24,6 +24,7 @@ Body load_body(const std::filesystem::path& file) {
   shape.finish();
 
   if (root.has("atmosphere")) body.atmosphere = root.raw("atmosphere");
+  if (root.has("terrain")) body.terrain = root.raw("terrain");
   root.finish();
   return body;
 }

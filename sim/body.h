@@ -24,6 +24,9 @@ struct Body {
   // The "atmosphere" object of the body's file, parsed by the atmosphere
   // module; null for an airless body.
   nlohmann::json atmosphere;
+  // The "terrain" object, parsed by the terrain module; null for a smooth
+  // ellipsoid.
+  nlohmann::json terrain;
 
   bool has_atmosphere() const { return !atmosphere.is_null(); }
 };
