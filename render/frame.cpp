@@ -93,8 +93,6 @@ void FrameRenderer::draw_surfaces(const Camera& camera, const glm::dvec3& sun_di
   glClearNamedFramebufferfv(surface_fbo_.id(), GL_DEPTH, 0, &far_depth);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_GREATER);
-
-  if (terrain_wait_s_ > 0) terrain_->wait_until_complete(camera, width_, height_, terrain_wait_s_);
   TerrainLighting lighting;
   lighting.sun_dir_body = sun_dir_body;
   lighting.has_atmosphere = atmosphere_.has_value();
@@ -110,6 +108,8 @@ void FrameRenderer::draw_surfaces(const Camera& camera, const glm::dvec3& sun_di
 
 FrameStats FrameRenderer::render(const Camera& camera, const glm::dvec3& sun_dir_body,
                                  double exposure) {
+  // Before the surface timer starts: waiting is not drawing.
+  if (terrain_wait_s_ > 0) terrain_->wait_until_complete(camera, width_, height_, terrain_wait_s_);
   timer_.begin("surface");
   draw_surfaces(camera, sun_dir_body);
   timer_.end();

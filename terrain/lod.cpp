@@ -38,16 +38,21 @@ bool LodSelector::above_horizon(const TileBounds& b, const LodView& view) const 
   return angle - angular_radius <= std::acos(R / D) + std::acos(R / r_top);
 }
 
-void LodSelector::visit(const TileKey& key, const TileBounds& bounds, double error,
-                        double parent_error, const LodView& view,
-                        const TileErrorLookup& resident_error, LodSelection& out) const {
+void LodSelector::visit(const TileKey& key, const ResidentTile& tile, double parent_error,
+                        const LodView& view, const TileErrorLookup& resident_error,
+                        LodSelection& out) const {
   ++out.visited;
+  const double error = tile.error;
+  TileBounds bounds = surface_->bounds(key, &tile.heights);
+  // The eye's distance to the tile is at least its distance to the
+  // bounding sphere, and at least its height above the tile's highest point.
   double distance =
-      std::max(glm::length(bounds.sphere_center_body - view.eye_body) - bounds.radius, 0.0);
+      std::max({glm::length(bounds.sphere_center_body - view.eye_body) - bounds.radius,
+                glm::length(view.eye_body) - bounds.max_radius, 0.0});
   double error_px = distance > 0 ? error * view.pixels_per_radian() / distance : 1e30;
   if (error_px > view.pixel_budget && key.level < surface_->config().max_level) {
     TileBounds child_bounds[4];
-    double child_error[4];
+    ResidentTile child_tile[4];
     bool visible[4], all_resident = true;
     for (int i = 0; i < 4; ++i) {
       TileKey c = key.child(i);
@@ -60,8 +65,7 @@ void LodSelector::visit(const TileKey& key, const TileBounds& bounds, double err
         visible[i] = false;
         ++out.culled_horizon;
       }
-      child_error[i] = visible[i] ? resident_error(c) : 0.0;
-      if (child_error[i] < 0) {
+      if (visible[i] && !resident_error(c, child_tile[i])) {
         all_resident = false;
         out.wanted.push_back(c);
       }
@@ -69,7 +73,7 @@ void LodSelector::visit(const TileKey& key, const TileBounds& bounds, double err
     if (all_resident) {
       for (int i = 0; i < 4; ++i) {
         if (visible[i]) {
-          visit(key.child(i), child_bounds[i], child_error[i], error, view, resident_error, out);
+          visit(key.child(i), child_tile[i], error, view, resident_error, out);
         }
       }
       return;
@@ -103,12 +107,12 @@ LodSelection LodSelector::select(const LodView& view,
       ++out.culled_horizon;
       continue;
     }
-    double error = resident_error(root);
-    if (error < 0) {
+    ResidentTile tile;
+    if (!resident_error(root, tile)) {
       out.wanted.push_back(root);
       continue;
     }
-    visit(root, b, error, 0.0, view, resident_error, out);
+    visit(root, tile, 0.0, view, resident_error, out);
   }
   // Coarse tiles first: they fill holes; then the nearest.
   std::stable_sort(out.wanted.begin(), out.wanted.end(),

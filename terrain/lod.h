@@ -41,9 +41,14 @@ struct LodSelection {
   int visited = 0, culled_frustum = 0, culled_horizon = 0;
 };
 
-// A resident tile's measured error, or a negative number when the tile
-// is not resident.
-using TileErrorLookup = std::function<double(const TileKey&)>;
+// What selection needs of a resident tile: its measured error and the
+// heights of its grid (tighter bounds than the height source can promise).
+struct ResidentTile {
+  double error = 0;
+  HeightRange heights;
+};
+// Fills `out` and returns true when the tile is resident.
+using TileErrorLookup = std::function<bool(const TileKey&, ResidentTile& out)>;
 
 class LodSelector {
  public:
@@ -61,7 +66,7 @@ class LodSelector {
   bool above_horizon(const TileBounds& bounds, const LodView& view) const;
 
  private:
-  void visit(const TileKey& key, const TileBounds& bounds, double error, double parent_error,
+  void visit(const TileKey& key, const ResidentTile& tile, double parent_error,
              const LodView& view, const TileErrorLookup& resident_error, LodSelection& out) const;
 
   const TerrainSurface* surface_;

@@ -45,6 +45,10 @@ double crater_profile(double x) {
 constexpr double kCraterMaxSlope = 3.0;
 constexpr double kCraterMaxCurvature = 20.0;
 constexpr double kCraterReach = 2.5;  // profile is zero beyond this many radii
+// Crater radii in cells, and how many craters can overlap at a point (one
+// per cell of the 2 x 2 x 2 block that can reach it).
+constexpr double kCraterMinRadius = 0.1, kCraterMaxRadius = 0.25;
+constexpr double kCraterOverlap = 8.0;
 
 // Rounding of the ridged crests, in units of the noise's range, and the
 // curvature bound that follows: with r = 1 - (sqrt(g^2 + e^2) - e),
@@ -68,25 +72,28 @@ double unit(uint32_t& state) {
 }
 
 // Craters whose centres lie in the cells of a lattice of spacing `cell`
-// around p, their radii between 0.15 and 0.4 cell so that a crater's reach
-// (2.5 radii) stays within the neighbouring cells.
+// around p, radii between 0.1 and 0.25 cell, so that a crater reaches at
+// most 0.625 cell from its centre and only the neighbour cells on the near
+// side of each axis can touch p. Distances are taken in 3D: a centre off
+// the surface gives a smaller, shallower crater where the sphere cuts it.
 double crater_field(const glm::dvec3& p, double cell, double depth_ratio, double density,
-                    uint32_t seed, double body_radius) {
+                    uint32_t seed) {
   glm::dvec3 q = p / cell;
-  int64_t cx = int64_t(std::floor(q.x)), cy = int64_t(std::floor(q.y)),
-          cz = int64_t(std::floor(q.z));
+  glm::dvec3 f = glm::floor(q);
+  glm::dvec3 frac = q - f;
+  auto lo = [](double t) { return t < kCraterMaxRadius * kCraterReach ? -1 : 0; };
+  auto hi = [](double t) { return t > 1.0 - kCraterMaxRadius * kCraterReach ? 1 : 0; };
+  auto cx = int64_t(f.x), cy = int64_t(f.y), cz = int64_t(f.z);
   double h = 0;
-  for (int dz = -1; dz <= 1; ++dz) {
-    for (int dy = -1; dy <= 1; ++dy) {
-      for (int dx = -1; dx <= 1; ++dx) {
+  for (int dz = lo(frac.z); dz <= hi(frac.z); ++dz) {
+    for (int dy = lo(frac.y); dy <= hi(frac.y); ++dy) {
+      for (int dx = lo(frac.x); dx <= hi(frac.x); ++dx) {
         uint32_t s = cell_hash(cx + dx, cy + dy, cz + dz, seed);
         if (unit(s) >= density) continue;
         glm::dvec3 c(double(cx + dx) + unit(s), double(cy + dy) + unit(s),
                      double(cz + dz) + unit(s));
-        // The centre put on the sphere, so every crater is a full circle.
-        glm::dvec3 centre = glm::normalize(c) * (body_radius / cell);
-        double r = 0.15 + 0.25 * unit(s);
-        double x = glm::length(q - centre) / r;
+        double r = kCraterMinRadius + (kCraterMaxRadius - kCraterMinRadius) * unit(s);
+        double x = glm::length(q - c) / r;
         if (x < kCraterReach) h += depth_ratio * r * cell * crater_profile(x);
       }
     }
@@ -102,10 +109,10 @@ ProceduralHeight::ProceduralHeight(double radius, std::vector<NoiseLayer> layers
   double total = 0;
   for (const NoiseLayer& layer : layers_) {
     for_each_octave(layer, [&](int, double a, double freq) {
-      // Craters: depth-to-radius ratio times a radius of at most 0.4 cell,
-      // a profile spanning 1.0 of that, and up to 8 craters overlapping.
+      // Craters: depth-to-radius ratio times the largest radius, a profile
+      // spanning 1.0 of that, and overlapping craters.
       total += layer.kind == NoiseLayer::Kind::kCraters
-                   ? 8.0 * layer.amplitude / layer.wavelength * 0.4 / freq
+                   ? kCraterOverlap * layer.amplitude / layer.wavelength * kCraterMaxRadius / freq
                    : a;
     });
   }
@@ -133,7 +140,7 @@ double ProceduralHeight::raw_height(const glm::dvec3& p) const {
         case NoiseLayer::Kind::kCraters:
           // amplitude / wavelength is the depth-to-radius ratio.
           h += crater_field(p, 1.0 / freq, layer.amplitude / layer.wavelength, layer.density,
-                            seed, radius_);
+                            seed);
           break;
       }
     });
@@ -161,9 +168,8 @@ HeightRange ProceduralHeight::range_near(const glm::dvec3& dir_body, double radi
           break;
         case NoiseLayer::Kind::kCraters: {
           double ratio = layer.amplitude / layer.wavelength;
-          // 27 cells of craters of depth ratio * R can overlap a point; at
-          // most 8 do (a cell's reach is 1 cell).
-          spread += std::min(8.0 * 0.4 * ratio / freq, 8.0 * ratio * kCraterMaxSlope * radius);
+          spread += kCraterOverlap * std::min(kCraterMaxRadius * ratio / freq,
+                                              ratio * kCraterMaxSlope * radius);
           break;
         }
       }
@@ -196,10 +202,10 @@ double ProceduralHeight::interpolation_error(double spacing) const {
           break;
         case NoiseLayer::Kind::kCraters: {
           double ratio = layer.amplitude / layer.wavelength;
-          double r_min = 0.15 / freq;
-          e += 8.0 * std::min({ratio * kCraterMaxSlope * spacing / 2.0,
-                               ratio / r_min * kCraterMaxCurvature * spacing * spacing / 8.0,
-                               0.4 * ratio / freq});
+          double r_min = kCraterMinRadius / freq;
+          e += kCraterOverlap * std::min({ratio * kCraterMaxSlope * spacing / 2.0,
+                                          ratio / r_min * kCraterMaxCurvature * spacing * spacing / 8.0,
+                                          kCraterMaxRadius * ratio / freq});
           break;
         }
       }

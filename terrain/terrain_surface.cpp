@@ -41,7 +41,7 @@ glm::dvec3 TerrainSurface::face_point(int face, double s, double t, double* heig
   return point(cube_to_sphere(face, s, t), height);
 }
 
-TileBounds TerrainSurface::bounds(const TileKey& key) const {
+TileBounds TerrainSurface::bounds(const TileKey& key, const HeightRange* heights_known) const {
   TileBounds b;
   double s0 = key.s0(), t0 = key.t0(), size = key.size();
   glm::dvec3 mid_dir = cube_to_sphere(key.face, s0 + 0.5 * size, t0 + 0.5 * size);
@@ -50,7 +50,7 @@ TileBounds TerrainSurface::bounds(const TileKey& key) const {
   // radius is at most half the diagonal: half a tile edge times sqrt(2).
   double half_diagonal = 0.5 * spacing_[size_t(key.level)] * (kTileGrid - 1) *
                          glm::root_two<double>();
-  b.heights = heights().range_near(mid_dir, half_diagonal);
+  b.heights = heights_known ? *heights_known : heights().range_near(mid_dir, half_diagonal);
   // Sample the tile's square at both height limits; the surface between
   // samples bulges by at most sag = e^2 / (8 rho) for a sample spacing e.
   constexpr int kSamples = 5;
@@ -72,10 +72,15 @@ TileBounds TerrainSurface::bounds(const TileKey& key) const {
   }
   b.sphere_center_body = 0.5 * (lo + hi);
   double r = 0;
-  for (const auto& p : points) r = std::max(r, glm::length(p - b.sphere_center_body));
+  for (const auto& p : points) {
+    r = std::max(r, glm::length(p - b.sphere_center_body));
+    b.max_radius = std::max(b.max_radius, glm::length(p));
+  }
   double e = 1.5 * spacing_[size_t(key.level)] * (kTileGrid - 1) / (kSamples - 1);
   double rho = shape_.polar_radius() * shape_.polar_radius() / shape_.equatorial_radius;
-  b.radius = r + e * e / (8.0 * rho) + 1e-3;
+  double sag = e * e / (8.0 * rho);
+  b.radius = r + sag + 1e-3;
+  b.max_radius += sag + 1e-3;
   return b;
 }
 

@@ -20,6 +20,7 @@ struct TileBounds {
   glm::dvec3 center_body{0.0};  // the tile's placement centre (on the ellipsoid)
   glm::dvec3 sphere_center_body{0.0};
   double radius = 0;            // bounding sphere of everything the tile can hold
+  double max_radius = 0;        // no point of the tile lies farther from the body's centre
   HeightRange heights;
 };
 
@@ -36,7 +37,9 @@ class TerrainSurface {
   // Face grid point (s, t) of a face.
   glm::dvec3 face_point(int face, double s, double t, double* height = nullptr) const;
 
-  TileBounds bounds(const TileKey& key) const;
+  // Bounds from the heights the tile can hold: those of its built grid
+  // when given, else what the height source promises for its area.
+  TileBounds bounds(const TileKey& key, const HeightRange* heights = nullptr) const;
   // The largest distance between neighbouring grid vertices of a tile of
   // this level, anywhere on the body.
   double grid_spacing(int level) const { return spacing_[size_t(level)]; }

@@ -35,10 +35,12 @@ bool TileCache::resident(const TileKey& key) const {
   return tiles_.count(key) > 0;
 }
 
-double TileCache::resident_error(const TileKey& key) const {
+bool TileCache::lookup(const TileKey& key, ResidentTile& out) const {
   std::lock_guard lock(mutex_);
   auto it = tiles_.find(key);
-  return it == tiles_.end() ? -1.0 : it->second.mesh->error;
+  if (it == tiles_.end()) return false;
+  out = {it->second.mesh->error, it->second.mesh->heights};
+  return true;
 }
 
 std::shared_ptr<const TileMesh> TileCache::use(const TileKey& key, uint64_t frame) {

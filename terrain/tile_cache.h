@@ -4,6 +4,7 @@
 // longer wanted are never built), takes what is ready, and marks what it
 // drew; when the cache is over budget the tiles unused for longest go
 // first, never one used in the current frame.
+#include "terrain/lod.h"
 #include "terrain/tile_mesh.h"
 
 #include <condition_variable>
@@ -27,8 +28,8 @@ class TileCache {
   void request(const std::vector<TileKey>& keys);
   // Whether the tile is built and in the cache.
   bool resident(const TileKey& key) const;
-  // The resident tile's measured error, or -1 when it is not resident.
-  double resident_error(const TileKey& key) const;
+  // The resident tile's error and heights; false when not resident.
+  bool lookup(const TileKey& key, ResidentTile& out) const;
   // The tile, marked as used in `frame`; null when not resident.
   std::shared_ptr<const TileMesh> use(const TileKey& key, uint64_t frame);
   // Drops least recently used tiles, not used in `frame`, until under

@@ -70,7 +70,7 @@ void TerrainRenderer::wait_until_complete(const Camera& camera, int width, int h
   auto start = std::chrono::steady_clock::now();
   // Each round makes the next level resident where the view wants it.
   while (true) {
-    LodSelection sel = selector_.select(view, [&](const TileKey& k) { return cache_->resident_error(k); });
+    LodSelection sel = selector_.select(view, [&](const TileKey& k, ResidentTile& t) { return cache_->lookup(k, t); });
     if (sel.wanted.empty()) return;
     cache_->request(sel.wanted);
     double left = timeout_s -
@@ -93,7 +93,7 @@ TerrainStats TerrainRenderer::draw(const Camera& camera, int width, int height,
   ++frame_;
   LodView view = lod_view(camera, width, height, options_.pixel_budget);
   LodSelection sel =
-      selector_.select(view, [&](const TileKey& k) { return cache_->resident_error(k); });
+      selector_.select(view, [&](const TileKey& k, ResidentTile& t) { return cache_->lookup(k, t); });
   cache_->request(sel.wanted);
 
   TerrainStats stats;
