@@ -110,7 +110,11 @@ TEST_P(PrecisionTest, VerticesMoveSmoothlyOnlyWithCameraRelativePlacement) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Heights, PrecisionTest,
-                         ::testing::Values(Case{2.0, 20}, Case{400e3, 9}));
+                         ::testing::Values(Case{2.0, 20}, Case{400e3, 9}),
+                         [](const ::testing::TestParamInfo<Case>& param_info) {
+                           return param_info.param.height < 100 ? std::string("Ground2m")
+                                                          : std::string("Orbit400km");
+                         });
 
 }  // namespace
 }  // namespace planet
