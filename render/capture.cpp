@@ -97,6 +97,10 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
   std::filesystem::remove(finished_marker);
 
   FrameRenderer renderer(script.width, script.height);
+  TerrainOptions terrain;
+  terrain.pixel_budget = options.pixel_budget;
+  terrain.cache_bytes = options.terrain_cache_bytes;
+  renderer.set_terrain_options(terrain);
   // A capture draws every tile the view needs at its level: frames must
   // not depend on how fast tiles happened to be built.
   renderer.set_terrain_wait(kTerrainWaitSeconds);
