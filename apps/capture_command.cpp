@@ -19,6 +19,8 @@ namespace {
 struct CaptureArgs {
   std::string flight_file, out_dir, frames;
   bool quiet = false;
+  double pixel_budget = 1.0;
+  double terrain_cache_mib = 256.0;
 };
 
 // "A:B" (B exclusive), "A:" or ":B".
@@ -53,6 +55,8 @@ void run(const CaptureArgs& args) {
     std::tie(options.first_frame, options.end_frame) = parse_frame_range(args.frames);
   }
   options.progress = !args.quiet;
+  options.pixel_budget = args.pixel_budget;
+  options.terrain_cache_bytes = size_t(args.terrain_cache_mib * 1048576.0);
   auto context = GlContext::create_headless();
   if (!args.quiet) {
     std::fprintf(stderr, "planet: %s, %dx%d, %d frames at %g fps, %s sky on %s\n",
@@ -82,6 +86,12 @@ void add_capture_command(CLI::App& app) {
   cmd->add_option("--out", args->out_dir, "Output folder (default out/<flight name>)");
   cmd->add_option("--frames", args->frames, "Slice of frames A:B to render (B exclusive)");
   cmd->add_flag("--quiet", args->quiet, "No progress output");
+  cmd->add_option("--pixel-budget", args->pixel_budget,
+                  "Terrain detail: largest projected geometric error in pixels")
+      ->check(CLI::Range(0.1, 100.0));
+  cmd->add_option("--terrain-cache-mib", args->terrain_cache_mib,
+                  "Terrain tiles kept resident, MiB")
+      ->check(CLI::Range(8.0, 65536.0));
   cmd->callback([args] { run(*args); });
 }
 

@@ -24,9 +24,14 @@ namespace {
 volatile std::sig_atomic_t g_interrupted = 0;
 extern "C" void on_interrupt(int) { g_interrupted = 1; }
 
+// Generous: the deepest view (2 m above mountains) builds a few hundred
+// tiles, seconds on one core.
+constexpr double kTerrainWaitSeconds = 300.0;
+
 nlohmann::json sidecar(const FlightScript& script, const FlightPath& path, const Geodesy& geodesy,
                        int frame, double t, const Camera& camera, double exposure,
-                       const glm::dvec3& sun, const FrameStats& stats) {
+                       const glm::dvec3& sun, const FrameStats& stats,
+                       const TerrainStats& terrain) {
   Geodetic g = geodesy.geodetic_from_body(camera.pos_body);
   nlohmann::json passes = nlohmann::json::object();
   for (const auto& p : stats.passes) passes[p.pass] = p.gpu_ms;
@@ -47,6 +52,13 @@ nlohmann::json sidecar(const FlightScript& script, const FlightPath& path, const
       {"exposure", exposure},
       {"image", {{"width", script.width}, {"height", script.height}}},
       {"gpu_ms", passes},
+      {"terrain",
+       {{"tiles_drawn", terrain.tiles_drawn},
+        {"triangles", terrain.triangles},
+        {"tiles_resident", terrain.tiles_resident},
+        {"bytes_resident", terrain.bytes_resident},
+        {"max_error_px", terrain.max_error_px},
+        {"deepest_level", terrain.max_level}}},
   };
   if (script.has_clock) j["utc"] = format_utc(path.utc_at(t));
   return j;
@@ -94,6 +106,13 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
   std::filesystem::remove(finished_marker);
 
   FrameRenderer renderer(script.width, script.height);
+  TerrainOptions terrain;
+  terrain.pixel_budget = options.pixel_budget;
+  terrain.cache_bytes = options.terrain_cache_bytes;
+  renderer.set_terrain_options(terrain);
+  // A capture draws every tile the view needs at its level: frames must
+  // not depend on how fast tiles happened to be built.
+  renderer.set_terrain_wait(kTerrainWaitSeconds);
   renderer.set_body(script.body, atmosphere, std::move(technique));
   FlightPath path(script);
   Geodesy geodesy(script.body.shape);
@@ -119,9 +138,11 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
     std::string stem = fmt::format("frame_{:05d}", frame);
     write_exr(options.out_dir / (stem + ".exr"), script.width, script.height, renderer.read_hdr());
     write_png(options.out_dir / (stem + ".png"), script.width, script.height, renderer.read_ldr());
-    write_text_file(
-        options.out_dir / (stem + ".json"),
-        sidecar(script, path, geodesy, frame, t, camera, exposure, sun, stats).dump(2) + "\n");
+    write_text_file(options.out_dir / (stem + ".json"),
+                    sidecar(script, path, geodesy, frame, t, camera, exposure, sun, stats,
+                            renderer.terrain_stats())
+                            .dump(2) +
+                        "\n");
     if (frame == first) result.first_png = options.out_dir / (stem + ".png");
     result.last_png = options.out_dir / (stem + ".png");
     ++result.frames;

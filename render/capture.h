@@ -17,6 +17,8 @@ struct CaptureOptions {
   int first_frame = 0;
   int end_frame = -1;  // one past the last; -1 means the flight's end
   bool progress = true;
+  double pixel_budget = 1.0;  // terrain: largest projected geometric error, pixels
+  size_t terrain_cache_bytes = size_t(256) << 20;
 };
 
 struct CaptureResult {

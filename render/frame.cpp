@@ -4,7 +4,6 @@
 #include "atmosphere/gpu/atmosphere_block.h"
 #include "render/gl/context.h"
 #include "sim/error.h"
-#include "terrain/ellipsoid_mesh.h"
 
 #include <glm/gtx/matrix_operation.hpp>
 
@@ -15,19 +14,6 @@
 namespace planet {
 
 namespace {
-
-// Patches per cube edge and quads per patch edge of the first planet mesh:
-// 6 x 8 x 8 patches of 16 x 16 quads, 98k triangles, ~60 km cells on Earth.
-constexpr int kPatchesPerEdge = 8;
-constexpr int kQuadsPerPatch = 16;
-
-// Airless bodies still need a surface colour; a dusty grey.
-constexpr float kAirlessAlbedo = 0.12f;
-
-struct PlanetVertex {
-  glm::vec3 offset;
-  glm::vec3 normal;
-};
 
 Framebuffer make_framebuffer(GLuint color, GLuint depth) {
   GLuint fbo = 0;
@@ -69,7 +55,6 @@ FrameRenderer::FrameRenderer(int width, int height)
       surface_fbo_(make_framebuffer(surface_.id(), depth_.id())),
       hdr_fbo_(make_framebuffer(hdr_.id(), 0)),
       ldr_fbo_(make_framebuffer(ldr_.id(), 0)),
-      planet_program_(Program::graphics("render/shaders/planet.vert", "render/shaders/planet.frag")),
       tonemap_program_(
           Program::graphics("render/shaders/fullscreen.vert", "render/shaders/tonemap.frag")),
       atmosphere_block_(make_buffer(sizeof(AtmosphereBlock), nullptr)) {
@@ -89,31 +74,7 @@ void FrameRenderer::set_body(const Body& body, std::optional<AtmosphereModel> at
   atmosphere_ = std::move(atmosphere);
   technique_ = std::move(technique);
 
-  PatchMesh mesh = make_ellipsoid_mesh(body.shape, kPatchesPerEdge, kQuadsPerPatch);
-  std::vector<PlanetVertex> vertices;
-  patch_centers_.clear();
-  for (const MeshPatch& patch : mesh.patches) {
-    patch_centers_.push_back(patch.center_body);
-    for (size_t i = 0; i < patch.offsets.size(); ++i) {
-      vertices.push_back({patch.offsets[i], patch.normals[i]});
-    }
-  }
-  patch_vertex_count_ = GLsizei(mesh.patches.front().offsets.size());
-  patch_index_count_ = GLsizei(mesh.indices.size());
-  planet_vertices_ = make_buffer(vertices.size() * sizeof(PlanetVertex), vertices.data(), 0);
-  planet_indices_ = make_buffer(mesh.indices.size() * sizeof(uint32_t), mesh.indices.data(), 0);
-
-  GLuint vao = 0;
-  glCreateVertexArrays(1, &vao);
-  glVertexArrayVertexBuffer(vao, 0, planet_vertices_.id(), 0, sizeof(PlanetVertex));
-  glVertexArrayElementBuffer(vao, planet_indices_.id());
-  glEnableVertexArrayAttrib(vao, 0);
-  glVertexArrayAttribFormat(vao, 0, 3, GL_FLOAT, GL_FALSE, offsetof(PlanetVertex, offset));
-  glVertexArrayAttribBinding(vao, 0, 0);
-  glEnableVertexArrayAttrib(vao, 1);
-  glVertexArrayAttribFormat(vao, 1, 3, GL_FLOAT, GL_FALSE, offsetof(PlanetVertex, normal));
-  glVertexArrayAttribBinding(vao, 1, 0);
-  planet_vao_ = VertexArray(vao);
+  terrain_ = std::make_unique<TerrainRenderer>(body, terrain_options_);
 
   if (atmosphere_) {
     AtmosphereBlock block = make_atmosphere_block(*atmosphere_);
@@ -132,49 +93,23 @@ void FrameRenderer::draw_surfaces(const Camera& camera, const glm::dvec3& sun_di
   glClearNamedFramebufferfv(surface_fbo_.id(), GL_DEPTH, 0, &far_depth);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_GREATER);
-  glEnable(GL_CULL_FACE);
-  glCullFace(GL_BACK);
-
-  glm::dmat3 view_from_body = glm::mat3_cast(glm::conjugate(camera.body_from_camera));
-  glm::mat4 clip_from_view = clip_from_view_reversed_z(
-      camera.vertical_fov, double(width_) / double(height_), camera.near);
-
-  planet_program_.use();
-  glUniformMatrix3fv(planet_program_.uniform("u_view_from_body"), 1, GL_FALSE,
-                     glm::value_ptr(glm::mat3(view_from_body)));
-  glUniformMatrix4fv(planet_program_.uniform("u_clip_from_view"), 1, GL_FALSE,
-                     glm::value_ptr(clip_from_view));
-  glUniform3fv(planet_program_.uniform("u_sun_dir_body"), 1,
-               glm::value_ptr(glm::vec3(sun_dir_body)));
-  glUniform1i(planet_program_.uniform("u_has_atmosphere"), atmosphere_ ? 1 : 0);
+  TerrainLighting lighting;
+  lighting.sun_dir_body = sun_dir_body;
+  lighting.has_atmosphere = atmosphere_.has_value();
   if (atmosphere_) {
-    glm::dvec3 scale = atmosphere_scale(body_.shape, atmosphere_->bottom_radius);
-    glUniform3fv(planet_program_.uniform("u_atmo_scale"), 1, glm::value_ptr(glm::vec3(scale)));
-    glUniform3fv(planet_program_.uniform("u_camera_atmo"), 1,
-                 glm::value_ptr(glm::vec3(scale * camera.pos_body)));
-    glUniform3fv(planet_program_.uniform("u_sun_dir_atmo"), 1,
-                 glm::value_ptr(glm::vec3(glm::normalize(scale * sun_dir_body))));
-    glUniform1f(planet_program_.uniform("u_albedo"), float(atmosphere_->ground_albedo));
-  } else {
-    glUniform1f(planet_program_.uniform("u_albedo"), kAirlessAlbedo);
+    lighting.atmo_scale = atmosphere_scale(body_.shape, atmosphere_->bottom_radius);
+    lighting.solar_irradiance = glm::vec3(atmosphere_->solar_irradiance);
   }
   // Bound even for an airless body (then all zero): the block is declared.
   glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, atmosphere_block_.id());
-  glBindVertexArray(planet_vao_.id());
-  GLint center_location = planet_program_.uniform("u_center_rel_eye");
-  for (size_t i = 0; i < patch_centers_.size(); ++i) {
-    // The one place a body-frame position meets the camera: in double.
-    glm::vec3 center_rel_eye(patch_centers_[i] - camera.pos_body);
-    glUniform3fv(center_location, 1, glm::value_ptr(center_rel_eye));
-    glDrawElementsBaseVertex(GL_TRIANGLES, patch_index_count_, GL_UNSIGNED_INT, nullptr,
-                             GLint(i) * patch_vertex_count_);
-  }
-  glDisable(GL_CULL_FACE);
+  terrain_stats_ = terrain_->draw(camera, width_, height_, lighting);
   glDisable(GL_DEPTH_TEST);
 }
 
 FrameStats FrameRenderer::render(const Camera& camera, const glm::dvec3& sun_dir_body,
                                  double exposure) {
+  // Before the surface timer starts: waiting is not drawing.
+  if (terrain_wait_s_ > 0) terrain_->wait_until_complete(camera, width_, height_, terrain_wait_s_);
   timer_.begin("surface");
   draw_surfaces(camera, sun_dir_body);
   timer_.end();

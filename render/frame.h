@@ -10,6 +10,7 @@
 #include "render/gl/timer.h"
 #include "sim/body.h"
 #include "sim/camera.h"
+#include "terrain/gpu/terrain_renderer.h"
 
 #include <cstdint>
 #include <memory>
@@ -41,6 +42,14 @@ class FrameRenderer {
 
   FrameStats render(const Camera& camera, const glm::dvec3& sun_dir_body, double exposure);
 
+  // Terrain settings, taken by the next set_body.
+  void set_terrain_options(const TerrainOptions& options) { terrain_options_ = options; }
+  // Capture: wait up to this long for every terrain tile a frame needs
+  // (0: draw what is resident and never wait, as a window does).
+  void set_terrain_wait(double seconds) { terrain_wait_s_ = seconds; }
+  const TerrainStats& terrain_stats() const { return terrain_stats_; }
+  TerrainRenderer* terrain() { return terrain_.get(); }
+
   int width() const { return width_; }
   int height() const { return height_; }
   // Linear HDR radiance, RGBA float, rows bottom-up as GL stores them.
@@ -55,12 +64,13 @@ class FrameRenderer {
   int width_, height_;
   Texture depth_, surface_, hdr_, ldr_;
   Framebuffer surface_fbo_, hdr_fbo_, ldr_fbo_;
-  Program planet_program_, tonemap_program_;
+  Program tonemap_program_;
   Buffer atmosphere_block_;
-  VertexArray planet_vao_, empty_vao_;
-  Buffer planet_vertices_, planet_indices_;
-  std::vector<glm::dvec3> patch_centers_;
-  GLsizei patch_vertex_count_ = 0, patch_index_count_ = 0;
+  VertexArray empty_vao_;
+  TerrainOptions terrain_options_;
+  std::unique_ptr<TerrainRenderer> terrain_;
+  TerrainStats terrain_stats_;
+  double terrain_wait_s_ = 0;
 
   Body body_;
   std::optional<AtmosphereModel> atmosphere_;

@@ -36,6 +36,7 @@ Body load_body(const std::filesystem::path& file) {
       root.fail("ephemeris", "needs the body's \"rotation\" to turn the sun into the body frame");
     }
   }
+  if (root.has("terrain")) body.terrain = root.raw("terrain");
   root.finish();
   return body;
 }

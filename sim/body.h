@@ -34,6 +34,9 @@ struct Body {
   bool has_rotation = false;
   // Where its sun is at a given time; none: scripts give the sun by hand.
   SunEphemeris ephemeris;
+  // The "terrain" object, parsed by the terrain module; null for a smooth
+  // ellipsoid.
+  nlohmann::json terrain;
 
   bool has_atmosphere() const { return !atmosphere.is_null(); }
 };

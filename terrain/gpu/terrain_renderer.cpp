@@ -1,0 +1,153 @@
+#include "terrain/gpu/terrain_renderer.h"
+
+#include "render/gl/context.h"
+#include "sim/error.h"
+
+#include <fmt/format.h>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <cmath>
+
+namespace planet {
+
+namespace {
+
+glm::mat4 clip_from_view(double vertical_fov, double aspect, double near) {
+  // Reversed Z, infinite far plane: depth = near / view depth.
+  double f = 1.0 / std::tan(0.5 * vertical_fov);
+  glm::mat4 m(0.0f);
+  m[0][0] = float(f / aspect);
+  m[1][1] = float(f);
+  m[3][2] = float(near);
+  m[2][3] = -1.0f;
+  return m;
+}
+
+}  // namespace
+
+LodView TerrainRenderer::lod_view(const Camera& camera, int width, int height,
+                                  double pixel_budget) {
+  LodView v;
+  v.eye_body = camera.pos_body;
+  v.view_from_body = glm::mat3_cast(glm::conjugate(camera.body_from_camera));
+  v.tan_half_fov_y = std::tan(0.5 * camera.vertical_fov);
+  v.aspect = double(width) / double(height);
+  v.height_px = height;
+  v.pixel_budget = pixel_budget;
+  return v;
+}
+
+TerrainRenderer::TerrainRenderer(const Body& body, const TerrainOptions& options)
+    : options_(options),
+      surface_(std::make_unique<TerrainSurface>(body.shape, parse_terrain(body))),
+      cache_(std::make_unique<TileCache>(*surface_, options.cache_bytes, options.workers)),
+      selector_(*surface_),
+      program_(Program::graphics("terrain/gpu/shaders/terrain.vert",
+                                 "terrain/gpu/shaders/terrain.frag")) {
+  const auto& idx = tile_indices();
+  indices_ = make_buffer(idx.size() * sizeof(uint16_t), idx.data(), 0);
+  GLuint vao = 0;
+  glCreateVertexArrays(1, &vao);
+  glVertexArrayElementBuffer(vao, indices_.id());
+  auto attrib = [&](GLuint loc, GLint n, GLenum type, GLboolean norm, size_t offset) {
+    glEnableVertexArrayAttrib(vao, loc);
+    glVertexArrayAttribFormat(vao, loc, n, type, norm, GLuint(offset));
+    glVertexArrayAttribBinding(vao, loc, 0);
+  };
+  attrib(0, 3, GL_FLOAT, GL_FALSE, offsetof(TileVertex, offset));
+  attrib(1, 3, GL_FLOAT, GL_FALSE, offsetof(TileVertex, morph_delta));
+  attrib(2, 3, GL_FLOAT, GL_FALSE, offsetof(TileVertex, normal));
+  attrib(3, 4, GL_UNSIGNED_BYTE, GL_TRUE, offsetof(TileVertex, albedo));
+  vao_ = VertexArray(vao);
+  check_gl_errors("TerrainRenderer setup");
+}
+
+TerrainRenderer::~TerrainRenderer() = default;
+
+void TerrainRenderer::wait_until_complete(const Camera& camera, int width, int height,
+                                          double timeout_s) {
+  LodView view = lod_view(camera, width, height, options_.pixel_budget);
+  auto start = std::chrono::steady_clock::now();
+  // Each round makes the next level resident where the view wants it.
+  while (true) {
+    LodSelection sel = selector_.select(view, [&](const TileKey& k, ResidentTile& t) { return cache_->lookup(k, t); });
+    if (sel.wanted.empty()) return;
+    cache_->request(sel.wanted);
+    double left = timeout_s -
+                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    std::vector<TileKey> missing = cache_->wait_for(sel.wanted, std::max(left, 0.0));
+    if (!missing.empty()) {
+      std::string names;
+      for (size_t i = 0; i < std::min<size_t>(missing.size(), 5); ++i) {
+        names += (i ? ", " : "") + missing[i].name();
+      }
+      throw SystemError(fmt::format(
+          "terrain: {} tiles (face/level/x/y) still missing after {:.0f} s: {}{}", missing.size(),
+          timeout_s, names, missing.size() > 5 ? ", ..." : ""));
+    }
+  }
+}
+
+TerrainStats TerrainRenderer::draw(const Camera& camera, int width, int height,
+                                   const TerrainLighting& lighting) {
+  ++frame_;
+  LodView view = lod_view(camera, width, height, options_.pixel_budget);
+  LodSelection sel =
+      selector_.select(view, [&](const TileKey& k, ResidentTile& t) { return cache_->lookup(k, t); });
+  cache_->request(sel.wanted);
+
+  TerrainStats stats;
+  stats.tiles_wanted = int(sel.wanted.size());
+
+  program_.use();
+  glm::mat4 clip = clip_from_view(camera.vertical_fov, double(width) / height, camera.near);
+  glUniformMatrix3fv(program_.uniform("u_view_from_body"), 1, GL_FALSE,
+                     glm::value_ptr(glm::mat3(view.view_from_body)));
+  glUniformMatrix4fv(program_.uniform("u_clip_from_view"), 1, GL_FALSE, glm::value_ptr(clip));
+  glUniform3fv(program_.uniform("u_sun_dir_body"), 1,
+               glm::value_ptr(glm::vec3(lighting.sun_dir_body)));
+  glUniform1i(program_.uniform("u_has_atmosphere"), lighting.has_atmosphere ? 1 : 0);
+  glUniform3fv(program_.uniform("u_sun_irradiance"), 1,
+               glm::value_ptr(lighting.solar_irradiance));
+  if (lighting.has_atmosphere) {
+    glm::dvec3 scale = lighting.atmo_scale;
+    glUniform3fv(program_.uniform("u_atmo_scale"), 1, glm::value_ptr(glm::vec3(scale)));
+    glUniform3fv(program_.uniform("u_camera_atmo"), 1,
+                 glm::value_ptr(glm::vec3(scale * camera.pos_body)));
+    glUniform3fv(program_.uniform("u_sun_dir_atmo"), 1,
+                 glm::value_ptr(glm::vec3(glm::normalize(scale * lighting.sun_dir_body))));
+  }
+  glBindVertexArray(vao_.id());
+  glDisable(GL_CULL_FACE);  // skirts are seen from both sides
+  const GLint center_loc = program_.uniform("u_center_rel_eye");
+  const GLint morph_loc = program_.uniform("u_morph_range");
+  const auto index_count = GLsizei(tile_indices().size());
+  for (const SelectedTile& t : sel.tiles) {
+    auto it = gpu_tiles_.find(t.key);
+    if (it == gpu_tiles_.end()) {
+      auto mesh = cache_->use(t.key, frame_);
+      if (!mesh) continue;  // selected tiles are resident; evicted meanwhile is impossible
+      GpuTile g{make_buffer(mesh->bytes(), mesh->vertices.data(), 0), mesh->center_body};
+      it = gpu_tiles_.emplace(t.key, std::move(g)).first;
+    } else {
+      cache_->use(t.key, frame_);
+    }
+    // The one place a body-frame position meets the camera: in double.
+    glm::vec3 center_rel_eye(it->second.center_body - camera.pos_body);
+    glUniform3fv(center_loc, 1, glm::value_ptr(center_rel_eye));
+    glUniform2f(morph_loc, float(t.morph_start), float(t.morph_end));
+    glVertexArrayVertexBuffer(vao_.id(), 0, it->second.vertices.id(), 0, sizeof(TileVertex));
+    glDrawElements(GL_TRIANGLES, index_count, GL_UNSIGNED_SHORT, nullptr);
+    ++stats.tiles_drawn;
+    stats.triangles += index_count / 3;
+    stats.max_error_px = std::max(stats.max_error_px, t.error_px);
+    stats.max_level = std::max(stats.max_level, t.key.level);
+  }
+  for (const TileKey& k : cache_->evict(frame_)) gpu_tiles_.erase(k);
+  stats.tiles_resident = cache_->tile_count();
+  stats.bytes_resident = cache_->bytes();
+  check_gl_errors("TerrainRenderer::draw");
+  return stats;
+}
+
+}  // namespace planet

@@ -1,0 +1,80 @@
+#pragma once
+// Draws a body's quadtree terrain: selects tiles for the camera, mirrors
+// the cache's tiles into GL buffers, and draws each tile placed by its
+// centre minus the camera, formed in double here every frame, so that no
+// double reaches the GPU and vertices stay still to well under a pixel
+// from 1 m above the ground to 1e8 m away.
+#include "terrain/lod.h"
+#include "terrain/tile_cache.h"
+
+#include "render/gl/program.h"
+#include "render/gl/texture.h"
+#include "sim/body.h"
+#include "sim/camera.h"
+
+#include <memory>
+#include <unordered_map>
+
+namespace planet {
+
+struct TerrainOptions {
+  double pixel_budget = 1.0;
+  size_t cache_bytes = size_t(256) << 20;  // tiles resident, CPU and GPU copies alike
+  int workers = 1;
+};
+
+struct TerrainStats {
+  int tiles_drawn = 0;
+  int64_t triangles = 0;
+  size_t tiles_resident = 0, bytes_resident = 0;
+  int tiles_wanted = 0;     // wanted but not resident when drawn
+  double max_error_px = 0;  // largest projected error bound of a drawn tile
+  int max_level = 0;
+};
+
+// What the terrain's shading needs from the frame: the sun and the
+// atmosphere (uniform block bound by the caller) in atmosphere space.
+struct TerrainLighting {
+  glm::dvec3 sun_dir_body{0, 0, 1};
+  bool has_atmosphere = false;
+  glm::dvec3 atmo_scale{1.0};
+  glm::vec3 solar_irradiance{1.0f};
+};
+
+class TerrainRenderer {
+ public:
+  // Needs a current GL context. Reads the body's terrain block.
+  TerrainRenderer(const Body& body, const TerrainOptions& options);
+  ~TerrainRenderer();
+
+  // Draws into the bound framebuffer, depth test as set by the caller.
+  TerrainStats draw(const Camera& camera, int width, int height, const TerrainLighting& lighting);
+
+  // Waits until every tile this view needs is resident (capture). Throws
+  // SystemError naming the missing tiles after `timeout_s`.
+  void wait_until_complete(const Camera& camera, int width, int height, double timeout_s);
+
+  void set_pixel_budget(double px) { options_.pixel_budget = px; }
+  const TerrainSurface& surface() const { return *surface_; }
+  const TileCache& cache() const { return *cache_; }
+
+  static LodView lod_view(const Camera& camera, int width, int height, double pixel_budget);
+
+ private:
+  struct GpuTile {
+    Buffer vertices;
+    glm::dvec3 center_body;
+  };
+
+  TerrainOptions options_;
+  std::unique_ptr<TerrainSurface> surface_;
+  std::unique_ptr<TileCache> cache_;
+  LodSelector selector_;
+  Program program_;
+  Buffer indices_;
+  VertexArray vao_;
+  std::unordered_map<TileKey, GpuTile, TileKeyHash> gpu_tiles_;
+  uint64_t frame_ = 0;
+};
+
+}  // namespace planet

@@ -1,0 +1,98 @@
+#include "terrain/terrain_config.h"
+
+#include "terrain/height_map.h"
+#include "terrain/procedural_height.h"
+
+#include "sim/data_paths.h"
+#include "sim/json_reader.h"
+
+#include <fmt/format.h>
+
+namespace planet {
+
+namespace {
+
+glm::vec3 color(JsonObject& o, const std::string& key) {
+  auto v = o.numbers(key, 3, 0.0, 1.0);
+  return {float(v[0]), float(v[1]), float(v[2])};
+}
+
+NoiseLayer parse_layer(JsonObject& o) {
+  NoiseLayer layer;
+  std::string type = o.string("type");
+  if (type == "fbm") layer.kind = NoiseLayer::Kind::kFbm;
+  else if (type == "ridged") layer.kind = NoiseLayer::Kind::kRidged;
+  else if (type == "craters") layer.kind = NoiseLayer::Kind::kCraters;
+  else o.fail("type", fmt::format("'{}' is not a layer type (fbm, ridged, craters)", type));
+  layer.amplitude = o.number("amplitude_m", 0.0, 1e5);
+  layer.wavelength = o.number("wavelength_m", 1.0, 1e8);
+  layer.octaves = o.integer("octaves", 1, 24);
+  layer.gain = o.number_or("gain", 0.5, 0.0, 1.0);
+  layer.lacunarity = o.number_or("lacunarity", 2.0, 1.1, 4.0);
+  layer.density = o.number_or("density", 0.5, 0.0, 1.0);
+  layer.seed = uint32_t(o.integer_or("seed", 1, 0, 1 << 30));
+  o.finish();
+  return layer;
+}
+
+std::shared_ptr<const HeightSource> parse_heights(JsonObject& o, const Body& body,
+                                                  std::optional<double>& sea_level) {
+  std::string type = o.string("type");
+  double mean_radius = (2.0 * body.shape.equatorial_radius + body.shape.polar_radius()) / 3.0;
+  if (type == "procedural") {
+    std::vector<NoiseLayer> layers;
+    for (JsonObject& l : o.objects("layers")) layers.push_back(parse_layer(l));
+    double offset = o.number_or("offset_m", 0.0, -1e5, 1e5);
+    if (o.has("sea_level_m")) sea_level = o.number("sea_level_m", -1e5, 1e5);
+    o.finish();
+    return std::make_shared<ProceduralHeight>(mean_radius, std::move(layers), offset, sea_level);
+  }
+  if (type == "height_map") {
+    std::filesystem::path file = o.string("file");
+    if (file.is_relative()) file = project_root() / file;
+    double scale = o.number("scale_m", -1e5, 1e5);
+    double offset = o.number_or("offset_m", 0.0, -1e5, 1e5);
+    o.finish();
+    auto map = std::make_shared<HeightMap>(file, scale, offset);
+    map->set_body_radius(mean_radius);
+    return map;
+  }
+  o.fail("type", fmt::format("'{}' is not a height source (procedural, height_map)", type));
+}
+
+}  // namespace
+
+TerrainConfig parse_terrain(const Body& body) {
+  TerrainConfig config;
+  if (body.terrain.is_null()) {
+    config.heights = std::make_shared<ProceduralHeight>(body.shape.equatorial_radius,
+                                                        std::vector<NoiseLayer>{}, 0.0,
+                                                        std::nullopt);
+    config.max_level = 12;
+    return config;
+  }
+  JsonObject root(body.terrain, body.file.string(), "terrain");
+  config.max_level = root.integer_or("max_level", 20, 0, 24);
+  JsonObject heights = root.object("height");
+  config.heights = parse_heights(heights, body, config.sea_level);
+  if (root.has("albedo")) {
+    JsonObject a = root.object("albedo");
+    SurfacePalette& p = config.palette;
+    p.low = color(a, "low");
+    p.high = color(a, "high");
+    p.steep = color(a, "steep");
+    if (a.has("snow")) p.snow = color(a, "snow");
+    if (a.has("ocean")) p.ocean = color(a, "ocean");
+    p.low_height = a.number_or("low_height_m", p.low_height, -1e5, 1e5);
+    p.high_height = a.number_or("high_height_m", p.high_height, -1e5, 1e5);
+    if (p.high_height <= p.low_height) a.fail("high_height_m", "must be above low_height_m");
+    p.snow_line_equator = a.number_or("snow_line_equator_m", p.snow_line_equator, -1e5, 1e5);
+    p.snow_line_pole = a.number_or("snow_line_pole_m", p.snow_line_pole, -1e5, 1e5);
+    p.steep_slope = a.number_or("steep_slope", p.steep_slope, 0.01, 1.0);
+    a.finish();
+  }
+  root.finish();
+  return config;
+}
+
+}  // namespace planet

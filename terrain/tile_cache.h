@@ -1,0 +1,67 @@
+#pragma once
+// Tiles built on worker threads into a cache bounded in bytes. The frame
+// asks for what it wants (replacing the previous wish list, so tiles no
+// longer wanted are never built), takes what is ready, and marks what it
+// drew; when the cache is over budget the tiles unused for longest go
+// first, never one used in the current frame.
+#include "terrain/lod.h"
+#include "terrain/tile_mesh.h"
+
+#include <condition_variable>
+#include <deque>
+#include <memory>
+#include <mutex>
+#include <thread>
+#include <unordered_map>
+#include <vector>
+
+namespace planet {
+
+class TileCache {
+ public:
+  TileCache(const TerrainSurface& surface, size_t budget_bytes, int workers);
+  ~TileCache();
+  TileCache(const TileCache&) = delete;
+  TileCache& operator=(const TileCache&) = delete;
+
+  // The wish list for this frame, most wanted first; replaces the last one.
+  void request(const std::vector<TileKey>& keys);
+  // Whether the tile is built and in the cache.
+  bool resident(const TileKey& key) const;
+  // The resident tile's error and heights; false when not resident.
+  bool lookup(const TileKey& key, ResidentTile& out) const;
+  // The tile, marked as used in `frame`; null when not resident.
+  std::shared_ptr<const TileMesh> use(const TileKey& key, uint64_t frame);
+  // Drops least recently used tiles, not used in `frame`, until under
+  // budget. Returns the keys dropped, for a GPU mirror to drop too.
+  std::vector<TileKey> evict(uint64_t frame);
+  // Blocks until every key is resident or `timeout_s` passes; returns the
+  // keys still missing.
+  std::vector<TileKey> wait_for(const std::vector<TileKey>& keys, double timeout_s);
+
+  size_t bytes() const;
+  size_t tile_count() const;
+  size_t budget_bytes() const { return budget_; }
+  uint64_t tiles_built() const;
+
+ private:
+  struct Entry {
+    std::shared_ptr<const TileMesh> mesh;
+    uint64_t last_used = 0;
+  };
+  void work();
+
+  const TerrainSurface* surface_;
+  size_t budget_;
+  mutable std::mutex mutex_;
+  std::condition_variable wake_workers_, tile_done_;
+  std::deque<TileKey> queue_;
+  std::unordered_map<TileKey, Entry, TileKeyHash> tiles_;
+  std::unordered_map<TileKey, bool, TileKeyHash> in_flight_;
+  size_t bytes_ = 0;
+  uint64_t built_ = 0;
+  bool stop_ = false;
+  std::vector<std::thread> threads_;
+};
+
+}  // namespace planet

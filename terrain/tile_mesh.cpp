@@ -1,0 +1,142 @@
+#include "terrain/tile_mesh.h"
+
+#include "terrain/cube_sphere.h"
+#include "terrain/surface_color.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace planet {
+
+namespace {
+
+constexpr int N = kTileGrid;
+
+uint32_t pack_albedo(glm::vec3 c) {
+  auto u8 = [](float v) { return uint32_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
+  return u8(c.r) | u8(c.g) << 8 | u8(c.b) << 16 | 255u << 24;
+}
+
+}  // namespace
+
+TileMesh build_tile(const TerrainSurface& surface, const TileKey& key) {
+  TileMesh tile;
+  tile.key = key;
+  const double s0 = key.s0(), t0 = key.t0(), step = key.size() / (N - 1);
+  tile.center_body =
+      ellipsoid_point(surface.shape(), cube_to_sphere(key.face, s0 + 0.5 * key.size(),
+                                                      t0 + 0.5 * key.size()));
+  // The grid with one more ring around it, so that every vertex's normal
+  // comes from central differences of its neighbours. The face parameter
+  // runs on past the face's edge there; the tangent warp is smooth across.
+  constexpr int M = N + 2;
+  std::vector<glm::dvec3> p(M * M);
+  std::vector<double> h(M * M);
+  for (int j = 0; j < M; ++j) {
+    for (int i = 0; i < M; ++i) {
+      p[j * M + i] = surface.face_point(key.face, s0 + step * (i - 1), t0 + step * (j - 1),
+                                        &h[j * M + i]);
+    }
+  }
+  auto at = [&](int i, int j) -> const glm::dvec3& { return p[(j + 1) * M + (i + 1)]; };
+  auto height_at = [&](int i, int j) { return h[(j + 1) * M + (i + 1)]; };
+
+  const auto& config = surface.config();
+  tile.vertices.resize(kTileVertexCount);
+  tile.heights = {1e300, -1e300};
+  for (int j = 0; j < N; ++j) {
+    for (int i = 0; i < N; ++i) {
+      const glm::dvec3& x = at(i, j);
+      glm::dvec3 normal = glm::normalize(glm::cross(at(i + 1, j) - at(i - 1, j),
+                                                    at(i, j + 1) - at(i, j - 1)));
+      // Where the parent's grid puts this vertex: on the parent edge (or
+      // diagonal) between the two even neighbours.
+      glm::dvec3 target = x;
+      bool odd_i = i % 2, odd_j = j % 2;
+      if (odd_i && odd_j) target = 0.5 * (at(i - 1, j - 1) + at(i + 1, j + 1));
+      else if (odd_i) target = 0.5 * (at(i - 1, j) + at(i + 1, j));
+      else if (odd_j) target = 0.5 * (at(i, j - 1) + at(i, j + 1));
+
+      glm::dvec3 up = ellipsoid_normal(surface.shape(), x);
+      double height = height_at(i, j);
+      bool at_sea = config.sea_level && height <= *config.sea_level + 1e-3;
+      glm::vec3 albedo = surface_albedo(config.palette, height, 1.0 - glm::dot(normal, up),
+                                        std::asin(std::clamp(up.z, -1.0, 1.0)), at_sea);
+      tile.vertices[size_t(j * N + i)] = {glm::vec3(x - tile.center_body), glm::vec3(target - x),
+                                          glm::vec3(normal), pack_albedo(albedo)};
+      tile.heights.min = std::min(tile.heights.min, height);
+      tile.heights.max = std::max(tile.heights.max, height);
+    }
+  }
+  // The error: the surface at the midpoints of the cell edges and
+  // diagonals (the grid of twice the resolution, which the children will
+  // hold) against the midpoints of the triangle edges.
+  for (int j = 0; j < N; ++j) {
+    for (int i = 0; i < N; ++i) {
+      const double mids[3][2] = {{0.5, 0.0}, {0.0, 0.5}, {0.5, 0.5}};
+      const int ends[3][2] = {{1, 0}, {0, 1}, {1, 1}};
+      for (int m = 0; m < 3; ++m) {
+        if (i + ends[m][0] >= N || j + ends[m][1] >= N) continue;
+        glm::dvec3 truth = surface.face_point(key.face, s0 + step * (i + mids[m][0]),
+                                              t0 + step * (j + mids[m][1]));
+        glm::dvec3 chord = 0.5 * (at(i, j) + at(i + ends[m][0], j + ends[m][1]));
+        tile.error = std::max(tile.error, glm::length(truth - chord));
+      }
+    }
+  }
+  // Skirts: a copy of each edge pushed down, deep enough to cover the
+  // largest gap to a neighbour two levels coarser (its error bound) with
+  // room for float rounding of the two tiles' offsets.
+  double depth = surface.error_bound(std::max(key.level - 2, 0)) +
+                 0.05 * surface.grid_spacing(key.level);
+  auto edge_vertex = [&](int edge, int k) {
+    switch (edge) {
+      case 0: return k;                  // bottom, j = 0
+      case 1: return (N - 1) * N + k;    // top, j = N - 1
+      case 2: return k * N;              // left, i = 0
+      default: return k * N + (N - 1);  // right, i = N - 1
+    }
+  };
+  for (int edge = 0; edge < 4; ++edge) {
+    for (int k = 0; k < N; ++k) {
+      TileVertex v = tile.vertices[size_t(edge_vertex(edge, k))];
+      glm::dvec3 x = tile.center_body + glm::dvec3(v.offset);
+      glm::dvec3 down = -ellipsoid_normal(surface.shape(), x);
+      v.offset = glm::vec3(x + depth * down - tile.center_body);
+      tile.vertices[size_t(N * N + edge * N + k)] = v;
+    }
+  }
+  return tile;
+}
+
+const std::vector<uint16_t>& tile_indices() {
+  static const std::vector<uint16_t> indices = [] {
+    std::vector<uint16_t> idx;
+    for (int j = 0; j + 1 < N; ++j) {
+      for (int i = 0; i + 1 < N; ++i) {
+        auto v00 = uint16_t(j * N + i), v10 = uint16_t(v00 + 1), v01 = uint16_t(v00 + N),
+             v11 = uint16_t(v01 + 1);
+        idx.insert(idx.end(), {v00, v10, v11, v00, v11, v01});
+      }
+    }
+    auto edge_vertex = [](int edge, int k) {
+      switch (edge) {
+        case 0: return k;
+        case 1: return (N - 1) * N + k;
+        case 2: return k * N;
+        default: return k * N + (N - 1);
+      }
+    };
+    for (int edge = 0; edge < 4; ++edge) {
+      for (int k = 0; k + 1 < N; ++k) {
+        auto a = uint16_t(edge_vertex(edge, k)), b = uint16_t(edge_vertex(edge, k + 1));
+        auto sa = uint16_t(N * N + edge * N + k), sb = uint16_t(sa + 1);
+        idx.insert(idx.end(), {a, sa, sb, a, sb, b});
+      }
+    }
+    return idx;
+  }();
+  return indices;
+}
+
+}  // namespace planet
