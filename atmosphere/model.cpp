@@ -35,6 +35,12 @@ DensityProfile parse_density(JsonObject d, double thickness) {
     double c = d.number("center_m", 0.0, thickness);
     double w = d.number("width_m", 1.0, 2.0 * thickness);
     double half = 0.5 * w;
+    // Density outside [0, thickness] would be silently cut off by the shell.
+    if (c - half < 0.0 || c + half > thickness) {
+      d.fail("width_m", fmt::format("the tent [{:g}, {:g}] m must lie inside the atmosphere "
+                                    "[0, {:g}] m",
+                                    c - half, c + half, thickness));
+    }
     p.layers[0] = {c, 0.0, 0.0, 1.0 / half, 1.0 - c / half};
     p.layers[1] = {0.0, 0.0, 0.0, -1.0 / half, 1.0 + c / half};
   } else if (type == "uniform") {
@@ -49,6 +55,7 @@ DensityProfile parse_density(JsonObject d, double thickness) {
 AtmosphereComponent parse_component(JsonObject c, const std::string& name, PhaseKind phase,
                                     double thickness) {
   AtmosphereComponent out;
+  c.string_or("source", "");  // where the values come from, for the reader
   out.name = name;
   out.phase = phase;
   out.scattering = c.has("scattering") ? rgb(c, "scattering") : glm::dvec3(0.0);
@@ -68,7 +75,72 @@ AtmosphereComponent parse_component(JsonObject c, const std::string& name, Phase
   return out;
 }
 
+// A coefficient at every spectral sample: either a table (one value per
+// wavelength, 1/m) or a power law {"reference_nm", "value", "exponent"},
+// value * (reference_nm / lambda)^exponent: Rayleigh's lambda^-4, or an
+// Angstrom exponent for aerosols.
+std::vector<double> spectral_coefficient(JsonObject& s, const std::string& key,
+                                         const std::vector<double>& wavelengths) {
+  if (!s.has(key)) return std::vector<double>(wavelengths.size(), 0.0);
+  if (s.raw(key).is_array()) return s.numbers(key, wavelengths.size(), 0.0, 1.0);
+  JsonObject law = s.object(key);
+  double reference_nm = law.number("reference_nm", 100.0, 3000.0);
+  double value = law.number("value", 0.0, 1.0);
+  double exponent = law.number("exponent", -10.0, 10.0);
+  law.finish();
+  std::vector<double> out;
+  for (double lambda : wavelengths) out.push_back(value * std::pow(reference_nm / lambda, exponent));
+  return out;
+}
+
+AtmosphereSpectrum parse_spectrum(JsonObject s) {
+  s.string_or("source", "");
+  AtmosphereSpectrum out;
+  out.wavelengths_nm = s.number_list("wavelengths_nm", 360.0, 830.0);
+  const auto& w = out.wavelengths_nm;
+  if (w.size() < kMinSpectralSamples) {
+    s.fail("wavelengths_nm", fmt::format("{} samples; at least {} are needed", w.size(),
+                                         kMinSpectralSamples));
+  }
+  for (size_t i = 1; i < w.size(); ++i) {
+    if (w[i] <= w[i - 1]) s.fail("wavelengths_nm", "must be strictly increasing");
+  }
+  if (w.front() > kSpectrumMinNm || w.back() < kSpectrumMaxNm) {
+    s.fail("wavelengths_nm", fmt::format("[{:g}, {:g}] nm must span {:g}-{:g} nm", w.front(),
+                                         w.back(), kSpectrumMinNm, kSpectrumMaxNm));
+  }
+  out.solar_irradiance = s.numbers("solar_irradiance", w.size(), 0.0, 1e6);
+  out.rayleigh_scattering = spectral_coefficient(s, "rayleigh_scattering", w);
+  out.mie_scattering = spectral_coefficient(s, "mie_scattering", w);
+  if (s.has("mie_extinction")) {
+    std::vector<double> extinction = spectral_coefficient(s, "mie_extinction", w);
+    for (size_t i = 0; i < w.size(); ++i) {
+      double absorption = extinction[i] - out.mie_scattering[i];
+      if (absorption < -1e-15) {
+        s.fail("mie_extinction", fmt::format("must not be below mie_scattering (at {:g} nm)", w[i]));
+      }
+      out.mie_absorption.push_back(std::max(absorption, 0.0));
+    }
+  } else {
+    out.mie_absorption = spectral_coefficient(s, "mie_absorption", w);
+  }
+  out.absorber_absorption = spectral_coefficient(s, "absorber_absorption", w);
+  s.finish();
+  return out;
+}
+
 }  // namespace
+
+AtmosphereModel with_scattering_scaled(AtmosphereModel m, double factor) {
+  m.rayleigh.scattering *= factor;
+  // Mie absorption is kept: the dense variants add scatterers, not absorbers.
+  m.mie.scattering *= factor;
+  if (m.spectrum) {
+    for (double& v : m.spectrum->rayleigh_scattering) v *= factor;
+    for (double& v : m.spectrum->mie_scattering) v *= factor;
+  }
+  return m;
+}
 
 AtmosphereModel parse_atmosphere(JsonObject a) {
   AtmosphereModel m;
@@ -97,6 +169,8 @@ AtmosphereModel parse_atmosphere(JsonObject a) {
   if (a.has("absorber")) {
     m.absorber = parse_component(a.object("absorber"), "absorber", PhaseKind::kNone, thickness);
   }
+  if (a.has("spectrum")) m.spectrum = parse_spectrum(a.object("spectrum"));
+  a.string_or("source", "");
   a.finish();
   return m;
 }

@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -42,6 +43,18 @@ struct AtmosphereComponent {
   glm::dvec3 extinction() const { return scattering + absorption; }
 };
 
+// The atmosphere at the spectral samples the ground truth renders with:
+// every vector holds one value per wavelength. Coefficients are at density 1
+// (multiply by the component's density profile), like the RGB ones.
+struct AtmosphereSpectrum {
+  std::vector<double> wavelengths_nm;       // increasing, within 360-830 nm
+  std::vector<double> solar_irradiance;     // W m^-2 nm^-1 at the top of the atmosphere
+  std::vector<double> rayleigh_scattering;  // 1/m
+  std::vector<double> mie_scattering;       // 1/m
+  std::vector<double> mie_absorption;       // 1/m
+  std::vector<double> absorber_absorption;  // 1/m
+};
+
 struct AtmosphereModel {
   double bottom_radius = 0;  // metres
   double top_radius = 0;
@@ -52,9 +65,20 @@ struct AtmosphereModel {
   double mie_g = 0;                  // Henyey-Greenstein / Cornette-Shanks asymmetry
   double ground_albedo = 0;
   AtmosphereComponent rayleigh, mie, absorber;
+  // Spectral samples for the ground truth; absent, only RGB renders.
+  std::optional<AtmosphereSpectrum> spectrum;
 };
+
+// The fewest spectral samples a body file may give, and the range they must
+// span: the CIE 1931 observer sees nearly nothing outside 380-780 nm.
+constexpr size_t kMinSpectralSamples = 16;
+constexpr double kSpectrumMinNm = 380.0, kSpectrumMaxNm = 780.0;
 
 // Parses and validates the "atmosphere" object of a body file.
 AtmosphereModel parse_atmosphere(JsonObject atmosphere);
+
+// The model with its scattering coefficients (Rayleigh and Mie, RGB and
+// spectral) multiplied by `factor`: the dense variants of the scenes.
+AtmosphereModel with_scattering_scaled(AtmosphereModel model, double factor);
 
 }  // namespace planet

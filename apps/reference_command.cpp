@@ -1,0 +1,86 @@
+// planet reference: the path-traced ground truth of a canonical scene, as
+// linear EXR (and a tone-mapped PNG beside it), through the reference cache.
+#include "apps/commands.h"
+#include "render/reference_cache.h"
+#include "sim/error.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cstdio>
+#include <string>
+#include <unistd.h>
+
+namespace planet::apps {
+
+namespace {
+
+struct ReferenceArgs {
+  std::string scene, out, mode = "rgb";
+  int spp = 256;
+  int width = 0, height = 0;
+  bool list = false, quiet = false;
+};
+
+void run_reference(const ReferenceArgs& args) {
+  if (args.list) {
+    for (const Scene& s : canonical_scenes()) {
+      std::printf("%-20s %-9s %s\n", s.name.c_str(), s.body.c_str(), s.description.c_str());
+    }
+    return;
+  }
+  if (args.scene.empty() || args.out.empty()) {
+    throw InputError("reference: --scene and --out are required (--list shows the scenes)");
+  }
+  Scene scene = find_scene(args.scene);
+  if (args.width > 0) scene.width = args.width;
+  if (args.height > 0) scene.height = args.height;
+  ReferenceMode mode = parse_reference_mode(args.mode);
+  Body body = scene_body(scene);
+  AtmosphereModel model = scene_atmosphere(scene, body);
+  std::filesystem::path cached = reference_cache_file(scene, model, args.spp, mode);
+  bool was_cached = std::filesystem::exists(cached);
+  bool terminal = isatty(fileno(stderr)) && !args.quiet;
+  auto start = std::chrono::steady_clock::now();
+  ImageRGB image = reference_image(scene, args.spp, mode, [&](double done) {
+    if (terminal) std::fprintf(stderr, "\rreference %s: %3.0f%%", scene.name.c_str(), 100 * done);
+  });
+  if (terminal && !was_cached) std::fprintf(stderr, "\n");
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::filesystem::path out(args.out);
+  if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
+  write_exr(out, image);
+  std::filesystem::path png = std::filesystem::path(out).replace_extension(".png");
+  write_tone_mapped_png(png, image, scene.exposure);
+  double paths = double(scene.width) * scene.height * args.spp;
+  std::printf("%s: %dx%d, %d spp, %s, %s in %.1f s (%.3g paths/s)\n", scene.name.c_str(),
+              scene.width, scene.height, args.spp, args.mode.c_str(),
+              was_cached ? "from the cache" : "rendered", seconds,
+              was_cached ? 0.0 : paths / seconds);
+  std::printf("wrote %s and %s (exposure %g); cache %s\n", out.string().c_str(),
+              png.string().c_str(), scene.exposure, cached.string().c_str());
+}
+
+}  // namespace
+
+void add_reference_command(CLI::App& app) {
+  auto args = std::make_shared<ReferenceArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "reference", "Path-trace a canonical scene's ground truth (cached, see --help)");
+  cmd->footer(fmt::format("Renders are cached by a hash of model, scene, spp, mode and tracer "
+                          "version in {}.",
+                          reference_cache_dir().string()));
+  cmd->add_option("--scene", args->scene, "Canonical scene name (see --list)");
+  cmd->add_option("--spp", args->spp, "Paths per pixel")->check(CLI::Range(1, 1 << 20));
+  cmd->add_option("--out", args->out, "Output EXR (a tone-mapped PNG is written beside it)");
+  cmd->add_option("--mode", args->mode, "rgb (the techniques' 3 wavelengths) or spectral");
+  cmd->add_option("--width", args->width, "Image width (default: the scene's, 128)")
+      ->check(CLI::Range(1, 8192));
+  cmd->add_option("--height", args->height, "Image height (default: the scene's, 64)")
+      ->check(CLI::Range(1, 8192));
+  cmd->add_flag("--list", args->list, "List the canonical scenes");
+  cmd->add_flag("--quiet", args->quiet, "No progress line");
+  cmd->callback([args] { run_reference(*args); });
+}
+
+}  // namespace planet::apps

@@ -1,0 +1,149 @@
+#include "render/reference_cache.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+
+namespace planet {
+
+std::filesystem::path reference_cache_dir() {
+  if (const char* dir = std::getenv("PLANET_CACHE_DIR"); dir && *dir) {
+    return std::filesystem::path(dir) / "reference";
+  }
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) {
+    return std::filesystem::path(xdg) / "planet" / "reference";
+  }
+  const char* home = std::getenv("HOME");
+  return std::filesystem::path(home && *home ? home : ".") / ".cache" / "planet" / "reference";
+}
+
+namespace {
+
+// FNV-1a over the bytes of every value that changes the pixels.
+class Hasher {
+ public:
+  void bytes(const void* data, size_t n) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (size_t i = 0; i < n; ++i) h_ = (h_ ^ p[i]) * 0x100000001b3ull;
+  }
+  void number(double x) { bytes(&x, sizeof x); }
+  void vec(const glm::dvec3& v) { number(v.x), number(v.y), number(v.z); }
+  void text(const std::string& s) { bytes(s.data(), s.size()), number(double(s.size())); }
+  void profile(const DensityProfile& p) {
+    for (const auto& l : p.layers) {
+      number(l.width), number(l.exp_term), number(l.exp_scale), number(l.linear_term),
+          number(l.constant_term);
+    }
+  }
+  void list(const std::vector<double>& v) {
+    number(double(v.size()));
+    for (double x : v) number(x);
+  }
+  uint64_t value() const { return h_; }
+
+ private:
+  uint64_t h_ = 0xcbf29ce484222325ull;
+};
+
+}  // namespace
+
+std::string reference_key(const Scene& scene, const AtmosphereModel& m, int spp,
+                          ReferenceMode mode) {
+  Hasher h;
+  h.number(kReferenceVersion);
+  h.number(spp);
+  h.text(to_string(mode));
+  h.number(m.bottom_radius), h.number(m.top_radius), h.vec(m.wavelengths_nm),
+      h.vec(m.solar_irradiance), h.number(m.sun_angular_radius), h.number(m.mie_g),
+      h.number(m.ground_albedo);
+  for (const AtmosphereComponent* c : {&m.rayleigh, &m.mie, &m.absorber}) {
+    h.vec(c->scattering), h.vec(c->absorption), h.profile(c->density);
+  }
+  if (m.spectrum) {
+    const AtmosphereSpectrum& s = *m.spectrum;
+    for (const auto* v : {&s.wavelengths_nm, &s.solar_irradiance, &s.rayleigh_scattering,
+                          &s.mie_scattering, &s.mie_absorption, &s.absorber_absorption}) {
+      h.list(*v);
+    }
+  }
+  h.text(scene.name), h.text(scene.body);
+  h.vec(scene.camera.pos_body), h.vec(scene.sun_dir_body);
+  h.number(scene.camera.body_from_camera.w), h.number(scene.camera.body_from_camera.x),
+      h.number(scene.camera.body_from_camera.y), h.number(scene.camera.body_from_camera.z);
+  h.number(scene.camera.vertical_fov), h.number(scene.width), h.number(scene.height);
+  h.number(scene.projection == Projection::kPerspective ? 0 : 1);
+  return fmt::format("{:016x}", h.value());
+}
+
+std::filesystem::path reference_cache_file(const Scene& scene, const AtmosphereModel& model,
+                                           int spp, ReferenceMode mode) {
+  return reference_cache_dir() / fmt::format("{}-{}x{}-{}spp-{}-{}.exr", scene.name, scene.width,
+                                             scene.height, spp, to_string(mode),
+                                             reference_key(scene, model, spp, mode));
+}
+
+ImageRGB to_image_rgb(const ReferenceImage& image) {
+  ImageRGB out;
+  out.width = image.width;
+  out.height = image.height;
+  out.pixels = image.rgb;
+  return out;
+}
+
+void write_exr(const std::filesystem::path& file, const ImageRGB& image) {
+  // write_exr takes GL's bottom-up RGBA rows.
+  std::vector<float> rgba(size_t(image.width) * size_t(image.height) * 4, 1.0f);
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const float* src = &image.pixels[3 * (size_t(y) * size_t(image.width) + size_t(x))];
+      float* dst = &rgba[4 * (size_t(image.height - 1 - y) * size_t(image.width) + size_t(x))];
+      std::memcpy(dst, src, 3 * sizeof(float));
+    }
+  }
+  write_exr(file, image.width, image.height, rgba);
+}
+
+void write_tone_mapped_png(const std::filesystem::path& file, const ImageRGB& image,
+                           double exposure) {
+  auto aces = [](double x) {
+    return std::clamp(x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
+  };
+  auto encode = [](double c) {
+    return c < 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+  };
+  std::vector<uint8_t> rgba(size_t(image.width) * size_t(image.height) * 4, 255);
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width; ++x) {
+      const float* src = &image.pixels[3 * (size_t(y) * size_t(image.width) + size_t(x))];
+      uint8_t* dst = &rgba[4 * (size_t(image.height - 1 - y) * size_t(image.width) + size_t(x))];
+      for (int c = 0; c < 3; ++c) {
+        double v = encode(aces(std::max(0.0, double(src[c]) * exposure)));
+        dst[c] = uint8_t(std::lround(255.0 * v));
+      }
+    }
+  }
+  write_png(file, image.width, image.height, rgba);
+}
+
+ImageRGB reference_image(const Scene& scene, int spp, ReferenceMode mode,
+                         const std::function<void(double)>& progress) {
+  Body body = scene_body(scene);
+  AtmosphereModel model = scene_atmosphere(scene, body);
+  std::filesystem::path file = reference_cache_file(scene, model, spp, mode);
+  if (std::filesystem::exists(file)) return read_image_rgb(file);
+  ReferenceSettings settings;
+  settings.spp = spp;
+  settings.seed = scene.seed();
+  settings.progress = progress;
+  ReferenceImage image =
+      render_reference(make_medium(model, mode), reference_view(scene, body, model), settings);
+  ImageRGB out = to_image_rgb(image);
+  std::filesystem::create_directories(file.parent_path());
+  write_exr(file, out);
+  return out;
+}
+
+}  // namespace planet

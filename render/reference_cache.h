@@ -1,0 +1,43 @@
+#pragma once
+// Reference images of the canonical scenes: rendered once by the path
+// tracer and kept as EXR in a cache, keyed by a hash of everything that
+// changes the pixels (the model as loaded, the scene, samples per pixel,
+// mode and the tracer's version), so a changed body file or a new tracer
+// never serves a stale image.
+//
+// The cache lives in $PLANET_CACHE_DIR/reference if set, otherwise in
+// $XDG_CACHE_HOME/planet/reference, otherwise ~/.cache/planet/reference.
+#include "atmosphere/reference/path_tracer.h"
+#include "atmosphere/scenes/scene.h"
+#include "render/image_io.h"
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+namespace planet {
+
+// Bumped whenever the tracer's output for the same inputs changes.
+constexpr int kReferenceVersion = 1;
+
+std::filesystem::path reference_cache_dir();
+
+// 16 hex digits identifying (model, scene, spp, mode, kReferenceVersion).
+std::string reference_key(const Scene& scene, const AtmosphereModel& model, int spp,
+                          ReferenceMode mode);
+std::filesystem::path reference_cache_file(const Scene& scene, const AtmosphereModel& model,
+                                           int spp, ReferenceMode mode);
+
+// The scene's reference image in linear sRGB radiance (rows top-down): read
+// from the cache, or rendered on all cores and cached. `progress` sees the
+// fraction done while rendering.
+ImageRGB reference_image(const Scene& scene, int spp, ReferenceMode mode = ReferenceMode::kRgb,
+                         const std::function<void(double)>& progress = {});
+
+ImageRGB to_image_rgb(const ReferenceImage& image);
+void write_exr(const std::filesystem::path& file, const ImageRGB& image);
+// Exposure, ACES fit and sRGB encoding as render/shaders/tonemap.frag.
+void write_tone_mapped_png(const std::filesystem::path& file, const ImageRGB& image,
+                           double exposure);
+
+}  // namespace planet
