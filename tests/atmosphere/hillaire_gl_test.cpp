@@ -176,5 +176,64 @@ TEST_F(HillaireGLTest, NoNanOrInfFromTheGroundToDeepSpaceAndInsideThePlanet) {
   }
 }
 
+// Frames of a climb from 40 to 96 km through the altitudes where the
+// per-pixel path takes over (60 to 80 km). A pop shows as a frame far from
+// the mean of its neighbours: the RMS of f_i - (f_(i-1) + f_(i+1)) / 2 over
+// the pixels, relative to the frame's mean, must stay within what either
+// path alone gives at the same frame.
+TEST_F(HillaireGLTest, SwitchToPerPixelMarchingDoesNotPop) {
+  constexpr int kFrames = 29;
+  auto climb = [&](HillaireTechnique::Path path, double switch_width = 0.2) {
+    HillaireTechnique::Settings settings;
+    settings.path = path;
+    settings.switch_end = settings.switch_start + switch_width;
+    make_renderer(settings);
+    std::vector<std::vector<float>> frames;
+    for (int i = 0; i < kFrames; ++i) {
+      double height = 40e3 + 2e3 * i;
+      frames.push_back(
+          render({glm::radians(46.5), glm::radians(8.0), height}, 0.0, -10.0, 30.0, 120.0));
+    }
+    return frames;
+  };
+  auto second_difference = [](const std::vector<std::vector<float>>& f, int i) {
+    double sum_sq = 0, sum = 0;
+    for (size_t k = 0; k < f[size_t(i)].size(); k += 4) {
+      for (size_t c = 0; c < 3; ++c) {
+        double mean = 0.5 * (f[size_t(i - 1)][k + c] + f[size_t(i + 1)][k + c]);
+        double d = f[size_t(i)][k + c] - mean;
+        sum_sq += d * d;
+        sum += f[size_t(i)][k + c];
+      }
+    }
+    double n = double(f[size_t(i)].size() / 4 * 3);
+    return std::sqrt(sum_sq / n) / (sum / n);
+  };
+  auto by_altitude = climb(HillaireTechnique::Path::kByAltitude);
+  auto luts = climb(HillaireTechnique::Path::kLuts);
+  auto per_pixel = climb(HillaireTechnique::Path::kPerPixel);
+  double worst_ratio = 0, worst_switch = 0, worst_alone = 0;
+  for (int i = 1; i + 1 < kFrames; ++i) {
+    double d_switch = second_difference(by_altitude, i);
+    double d_alone =
+        std::max(second_difference(luts, i), second_difference(per_pixel, i));
+    worst_switch = std::max(worst_switch, d_switch);
+    worst_alone = std::max(worst_alone, d_alone);
+    worst_ratio = std::max(worst_ratio, d_switch / d_alone);
+    // 10% over the worse path alone: the blend's own curvature in altitude
+    // may add a little, a pop adds its whole jump.
+    EXPECT_LE(d_switch, 1.1 * d_alone) << "frame " << i << " at " << 40 + 2 * i << " km";
+  }
+  std::printf("switch: worst second difference %.5f with the switch, %.5f with one path alone, "
+              "worst ratio %.3f\n",
+              worst_switch, worst_alone, worst_ratio);
+  // The measure must see a pop where there is one: a switch within 10 m.
+  auto hard = climb(HillaireTechnique::Path::kByAltitude, 1e-4);
+  double worst_hard = 0;
+  for (int i = 1; i + 1 < kFrames; ++i) worst_hard = std::max(worst_hard, second_difference(hard, i));
+  std::printf("switch within 10 m: worst second difference %.5f\n", worst_hard);
+  EXPECT_GT(worst_hard, 1.5 * worst_alone) << "a hard switch must show as a pop";
+}
+
 }  // namespace
 }  // namespace planet
