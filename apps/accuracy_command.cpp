@@ -1,7 +1,8 @@
 // planet accuracy: a GPU technique against the path-traced ground truth on
 // canonical scenes, as a table of RMSE and relative RMSE per channel (sun
-// disk left out), with the reference's own noise estimated beside it and
-// the images written where a person can look at them.
+// disk left out), with the reference's own noise estimated beside it, the
+// relative RMSE over the open sky alone, and the mean signed error (bias);
+// the images are written where a person can look at them.
 #include "apps/commands.h"
 #include "render/gl/context.h"
 #include "render/reference_cache.h"
@@ -59,8 +60,8 @@ void run_accuracy(const AccuracyArgs& args) {
     for (const auto& name : args.scenes) scenes.push_back(find_scene(name));
   }
   auto context = GlContext::create_headless();
-  std::printf("%-16s %-3s %12s %12s %9s %9s\n", "scene", "ch", "RMSE", "mean ref", "rel RMSE",
-              "ref noise");
+  std::printf("%-16s %-3s %11s %11s %9s %9s %9s %6s\n", "scene", "ch", "RMSE", "mean ref",
+              "rel RMSE", "ref noise", "sky only", "bias");
   for (Scene scene : scenes) {
     scene.width = args.width;
     scene.height = args.height;
@@ -73,9 +74,15 @@ void run_accuracy(const AccuracyArgs& args) {
     const char* names[3] = {"R", "G", "B"};
     for (size_t c = 0; c < 3; ++c) {
       const ChannelError& e = accuracy.channels[c];
-      std::printf("%-16s %-3s %12.4g %12.4g %8.2f%% %8.2f%%\n", scene.name.c_str(), names[c],
-                  e.rmse, e.mean_reference, 100 * e.relative(),
-                  100 * noise[c] / std::max(e.mean_reference, 1e-30));
+      double bias = 0;
+      for (size_t i = c; i < accuracy.signed_error.pixels.size(); i += 3) {
+        bias += accuracy.signed_error.pixels[i];
+      }
+      bias /= double(std::max(accuracy.pixels, 1));
+      std::printf("%-16s %-3s %11.4g %11.4g %8.2f%% %8.2f%% %8.2f%% %+5.1f%%\n",
+                  scene.name.c_str(), names[c], e.rmse, e.mean_reference, 100 * e.relative(),
+                  100 * noise[c] / std::max(e.mean_reference, 1e-30),
+                  100 * accuracy.sky_channels[c].relative(), 100 * bias);
     }
     if (!args.out.empty()) write_images(args.out, scene, technique, reference, accuracy);
     std::fflush(stdout);

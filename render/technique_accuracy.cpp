@@ -55,6 +55,24 @@ std::vector<uint8_t> sun_disk_mask(const Scene& scene) {
   return mask;
 }
 
+std::vector<uint8_t> ground_mask(const Scene& scene) {
+  Body body = scene_body(scene);
+  AtmosphereModel model = scene_atmosphere(scene, body);
+  ReferenceView view = reference_view(scene, body, model);
+  std::vector<uint8_t> mask(size_t(scene.width) * size_t(scene.height), 0);
+  for (int y = 0; y < scene.height; ++y) {
+    for (int x = 0; x < scene.width; ++x) {
+      glm::dvec3 d = view.ray_dir(x, y), o = view.camera_atmo;
+      double b = glm::dot(o, d);
+      double closest = glm::length(o - b * d);
+      if (b < 0 && closest < model.bottom_radius) {
+        mask[size_t(y) * size_t(scene.width) + size_t(x)] = 1;
+      }
+    }
+  }
+  return mask;
+}
+
 namespace {
 
 void check_sizes(const ImageRGB& a, const ImageRGB& b) {
@@ -70,20 +88,27 @@ TechniqueAccuracy measure_accuracy(const Scene& scene, const ImageRGB& technique
                                    const ImageRGB& reference) {
   check_sizes(technique, reference);
   std::vector<uint8_t> mask = sun_disk_mask(scene);
+  std::vector<uint8_t> ground = ground_mask(scene);
   TechniqueAccuracy result;
-  std::array<double, 3> sum_sq{}, sum_ref{};
+  std::array<double, 3> sum_sq{}, sum_ref{}, sky_sq{}, sky_ref{};
   for (size_t i = 0; i < mask.size(); ++i) {
     if (mask[i]) continue;
     ++result.pixels;
+    if (!ground[i]) ++result.sky_pixels;
     for (size_t c = 0; c < 3; ++c) {
       double t = technique.pixels[i * 3 + c], r = reference.pixels[i * 3 + c];
       sum_sq[c] += (t - r) * (t - r);
       sum_ref[c] += r;
+      if (!ground[i]) {
+        sky_sq[c] += (t - r) * (t - r);
+        sky_ref[c] += r;
+      }
     }
   }
   for (size_t c = 0; c < 3; ++c) {
-    double n = std::max(result.pixels, 1);
+    double n = std::max(result.pixels, 1), n_sky = std::max(result.sky_pixels, 1);
     result.channels[c] = {std::sqrt(sum_sq[c] / n), sum_ref[c] / n};
+    result.sky_channels[c] = {std::sqrt(sky_sq[c] / n_sky), sky_ref[c] / n_sky};
   }
   result.signed_error = {technique.width, technique.height,
                          std::vector<float>(technique.pixels.size(), 0.0f)};

@@ -21,6 +21,10 @@ struct ChannelError {
 struct TechniqueAccuracy {
   std::array<ChannelError, 3> channels{};
   int pixels = 0;  // compared, the sun disk left out
+  // The same over the pixels whose ray misses the planet (open sky): the
+  // ground's own shading (the frame's, not the technique's) left out.
+  std::array<ChannelError, 3> sky_channels{};
+  int sky_pixels = 0;
   // Per pixel and channel, (technique - reference) / mean reference.
   ImageRGB signed_error;
   double worst_relative() const;
@@ -34,6 +38,8 @@ ImageRGB render_scene_with(const Scene& scene, const std::string& technique);
 // 1 for pixels whose centre lies within the sun's disk widened by a pixel
 // and a half (a pixel that the disk covers in part); 0 elsewhere.
 std::vector<uint8_t> sun_disk_mask(const Scene& scene);
+// 1 for pixels whose ray meets the planet's bottom sphere.
+std::vector<uint8_t> ground_mask(const Scene& scene);
 
 TechniqueAccuracy measure_accuracy(const Scene& scene, const ImageRGB& technique,
                                    const ImageRGB& reference);

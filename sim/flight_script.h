@@ -34,7 +34,7 @@ struct FlightScript {
   int width = 0, height = 0;
   double frame_rate = 0;
   double exposure = 1;  // multiplies radiance before tone mapping; the default for keyframes
-  std::string technique = "raymarch";
+  std::string technique = "hillaire";
 
   double duration() const { return keyframes.back().time - keyframes.front().time; }
   // Frames at t = start + i / frame_rate for every such time in the flight.

@@ -20,9 +20,12 @@ void main() {
   Atmosphere atmosphere = block_atmosphere();
   vec2 ndc = (vec2(column) + 0.5) / float(kAerialPerspectiveSize) * 2.0 - 1.0;
   vec3 dir = normalize(u_ray_from_ndc * vec3(ndc, 1.0));
-  float t_end;
-  bool hits_ground;
-  ray_extent_inside(atmosphere, u_camera, dir, t_end, hits_ground);
+  // The march goes on through the bottom sphere: the ground mesh's facets
+  // lie below it (chords of the ellipsoid), so a surface may stand beyond
+  // where the sphere would stop the ray. It ends only at the top.
+  float t_top_near, t_end;
+  ray_sphere(u_camera, dir, atmosphere.top_radius, t_top_near, t_end);
+  t_end = max(t_end, 0.0);
 
   float nu = dot(dir, u_sun_dir);
   float phase_r = rayleigh_phase(nu);
@@ -31,7 +34,7 @@ void main() {
   float t_previous = 0.0;
   for (int k = 0; k < kAerialPerspectiveSize; ++k) {
     float w = (float(k) + 0.5) / float(kAerialPerspectiveSize);
-    // Beyond the ground or the top the slice holds what lies before them.
+    // Beyond the top a slice holds what lies before it.
     float t_slice = min(aerial_slice_distance(u_range, w), t_end);
     for (int s = 0; s < AERIAL_SUBSTEPS; ++s) {
       float t0 = mix(t_previous, t_slice, float(s) / float(AERIAL_SUBSTEPS));
