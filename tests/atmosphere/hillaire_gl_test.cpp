@@ -180,6 +180,19 @@ TEST_F(HillaireGLTest, NoNanOrInfFromTheGroundToDeepSpaceAndInsideThePlanet) {
   }
 }
 
+// The planet's shadow: with the sun 30 degrees below the horizon of the
+// point below, the night side seen from 400 km is dark, air and ground.
+TEST_F(HillaireGLTest, NightSideIsDarkFromOrbit) {
+  make_renderer();
+  auto hdr = render({0.0, 0.0, 400e3}, 90.0, -60.0, -30.0, 90.0, 40.0);
+  size_t centre = (size_t(kSize / 2) * kSize + kSize / 2) * 4;
+  double night = 0.2126 * hdr[centre] + 0.7152 * hdr[centre + 1] + 0.0722 * hdr[centre + 2];
+  // Sunlit ground from orbit is ~1e-2 in these units; the shadowed
+  // atmosphere has only light scattered in from the far terminator.
+  EXPECT_LT(night, 1e-5);
+  EXPECT_TRUE(all_finite(hdr));
+}
+
 // Frames of a climb from 40 to 96 km through the altitudes where the
 // per-pixel path takes over (60 to 80 km). A pop shows as a frame far from
 // the mean of its neighbours: the RMS of f_i - (f_(i-1) + f_(i+1)) / 2 over
