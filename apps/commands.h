@@ -14,5 +14,7 @@ void add_reference_command(CLI::App& app);
 // `planet probe <quantity>`: the probe parent, to which modules add their
 // quantities (transmittance, sky, sun, ...).
 CLI::App& add_probe_command(CLI::App& app);
+// `planet probe transmittance` and `planet probe sky`.
+void add_probe_atmosphere_commands(CLI::App& probe);
 
 }  // namespace planet::apps

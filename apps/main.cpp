@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   planet::apps::add_accuracy_command(app);
   planet::apps::add_reference_command(app);
   [[maybe_unused]] CLI::App& probe = planet::apps::add_probe_command(app);
+  planet::apps::add_probe_atmosphere_commands(probe);
 
   try {
     app.parse(argc, argv);

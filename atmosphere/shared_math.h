@@ -2,6 +2,11 @@
 // atmosphere/shaders/atmosphere_functions.glsl compiled as C++ in double
 // precision: the CPU side of the shared math (Bruneton's reference
 // implementation does the same with its functions.glsl).
+//
+// GLSL has no `inline`, so the functions are given internal linkage here:
+// each translation unit that includes this header gets its own copy of
+// these small functions, instead of one definition per includer clashing
+// at link time. Pass shared:: types only within one .cpp file.
 #include "atmosphere/model.h"
 
 #include <glm/glm.hpp>
@@ -10,17 +15,14 @@ namespace planet::shared {
 
 using namespace glm;
 using Real = double;
+using Real2 = glm::dvec2;
 using Real3 = glm::dvec3;
 #define IN(T) const T&
 #define OUT(T) T&
-// GLSL has no `inline`: the shared functions (and the structs they use)
-// get internal linkage instead, so that any number of translation units
-// may include them.
-namespace {
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-function"
+namespace {
 #include "atmosphere/shaders/atmosphere_functions.glsl"
-#pragma GCC diagnostic pop
 
 DensityProfile to_shared(const planet::DensityProfile& p) {
   DensityProfile out{};
@@ -32,7 +34,7 @@ DensityProfile to_shared(const planet::DensityProfile& p) {
 }
 
 // The model as the shared functions see it.
-[[maybe_unused]] Atmosphere to_shared(const AtmosphereModel& m) {
+Atmosphere to_shared(const AtmosphereModel& m) {
   Atmosphere a{};
   a.bottom_radius = m.bottom_radius;
   a.top_radius = m.top_radius;
@@ -49,8 +51,8 @@ DensityProfile to_shared(const planet::DensityProfile& p) {
   a.ground_albedo = Real3(m.ground_albedo);
   return a;
 }
-
 }  // namespace
+#pragma GCC diagnostic pop
 #undef IN
 #undef OUT
 

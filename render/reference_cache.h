@@ -18,7 +18,7 @@
 namespace planet {
 
 // Bumped whenever the tracer's output for the same inputs changes.
-constexpr int kReferenceVersion = 1;
+constexpr int kReferenceVersion = 2;
 
 std::filesystem::path reference_cache_dir();
 

@@ -78,66 +78,90 @@ double trace_path(const Medium& m, const MediumChannel& c, glm::dvec3 origin, gl
   // Sun disk radiance E / solid angle, as the GPU frame draws it; a point
   // on the disk sampled with pdf 1 / solid angle leaves E per estimate.
   const double solid_angle = 2.0 * reference::kPi * (1.0 - cos_alpha);
+  const double majorant = c.majorant;
   double radiance = 0;
-  int events = 0;
-  for (;;) {
+  // Each segment of the path (camera ray, then one per scattering or
+  // reflection) is tracked to its end through the majorant's tentative
+  // collisions. Two estimators share them:
+  // - the sun's direct light scattered along the segment: at each
+  //   tentative collision, with probability sigma_s / majorant, a
+  //   next-event estimate weighted by the segment's transmittance so far
+  //   (ratio tracking); likewise the sunlit ground at the segment's end and
+  //   the sun disk itself. No path then contributes nothing merely because
+  //   it met no particle (a next-flight estimator, after Novak et al. 2014).
+  // - the path's continuation, by analog delta tracking: the first real
+  //   collision absorbs (the path ends) or scatters (the next segment);
+  //   reaching the ground, the albedo decides by roulette.
+  // The continuation's vertices add only light scattered more than once,
+  // so nothing is counted twice.
+  for (int order = 1;; ++order) {
     Segment s = atmosphere_segment(m, origin, dir);
-    bool scattered = false;
-    if (s.inside) {
-      for (double t = s.t0 + free_flight(c.majorant, rng); t < s.t1;
-           t += free_flight(c.majorant, rng)) {
-        glm::dvec3 p = origin + t * dir;
-        Medium::Coefficients k = m.at(c, altitude_of(m, p));
-        double u = rng.uniform() * c.majorant;
-        if (u < k.absorption) return radiance;
-        if (u >= k.extinction()) continue;  // a null collision
-        // A real scattering event: Rayleigh or Mie in proportion.
+    if (!s.inside) {
+      radiance += options.environment_radiance;
+      if (order == 1 && options.sun && glm::dot(dir, sun_dir) >= cos_alpha) {
+        radiance += c.solar_irradiance / solid_angle;
+      }
+      return radiance;
+    }
+    double transmittance = 1.0;  // ratio-tracked, from the segment's start
+    bool decided = false, scatters = false, rayleigh_at_scatter = false;
+    glm::dvec3 scatter_point(0.0);
+    for (double t = s.t0 + free_flight(majorant, rng); t < s.t1; t += free_flight(majorant, rng)) {
+      glm::dvec3 p = origin + t * dir;
+      Medium::Coefficients k = m.at(c, altitude_of(m, p));
+      if (options.sun && rng.uniform() * majorant < k.scattering()) {
         bool rayleigh = rng.uniform() * k.scattering() < k.scattering_rayleigh;
-        ++events;
-        if (options.sun) {
-          glm::dvec3 to_sun = reference::sample_cone(sun_dir, cos_alpha, rng);
-          double nu = glm::dot(dir, to_sun);
-          double phase = rayleigh ? shared::rayleigh_phase(nu)
-                                  : shared::cornette_shanks_phase(m.mie_g, nu);
-          radiance += c.solar_irradiance * phase * ratio_tracking_transmittance(m, c, p, to_sun, rng);
+        glm::dvec3 to_sun = reference::sample_cone(sun_dir, cos_alpha, rng);
+        double nu = glm::dot(dir, to_sun);
+        double phase = rayleigh ? shared::rayleigh_phase(nu)
+                                : shared::cornette_shanks_phase(m.mie_g, nu);
+        radiance += transmittance * c.solar_irradiance * phase *
+                    ratio_tracking_transmittance(m, c, p, to_sun, rng);
+      }
+      if (!decided) {
+        double u = rng.uniform() * majorant;
+        if (u < k.absorption) {
+          decided = true;
+        } else if (u < k.extinction()) {
+          decided = scatters = true;
+          scatter_point = p;
+          rayleigh_at_scatter = rng.uniform() * k.scattering() < k.scattering_rayleigh;
         }
-        if (options.max_order > 0 && events >= options.max_order) return radiance;
-        double mu = rayleigh ? reference::sample_rayleigh_mu(rng.uniform())
-                             : reference::sample_cornette_shanks_mu(m.mie_g, rng);
-        dir = reference::direction_about(dir, mu, 2.0 * reference::kPi * rng.uniform());
-        origin = p;
-        scattered = true;
-        break;
+      }
+      transmittance *= 1.0 - k.extinction() / majorant;
+      if (decided && !options.sun) break;  // nothing more to gather here
+    }
+    glm::dvec3 end = origin + s.t1 * dir;
+    glm::dvec3 normal = glm::normalize(end);
+    if (s.hits_ground && options.sun) {
+      glm::dvec3 to_sun = reference::sample_cone(sun_dir, cos_alpha, rng);
+      double cos_sun = glm::dot(normal, to_sun);
+      if (cos_sun > 0.0) {
+        radiance += transmittance * c.solar_irradiance * m.ground_albedo / reference::kPi *
+                    cos_sun * ratio_tracking_transmittance(m, c, normal * m.bottom_radius, to_sun, rng);
       }
     }
-    if (scattered) continue;
-    if (s.inside && s.hits_ground) {
-      // Lambertian ground on the bottom sphere.
-      glm::dvec3 p = origin + s.t1 * dir;
-      glm::dvec3 normal = glm::normalize(p);
-      p = normal * m.bottom_radius;
-      ++events;
-      if (options.sun) {
-        glm::dvec3 to_sun = reference::sample_cone(sun_dir, cos_alpha, rng);
-        double cos_sun = glm::dot(normal, to_sun);
-        if (cos_sun > 0.0) {
-          radiance += c.solar_irradiance * m.ground_albedo / reference::kPi * cos_sun *
-                      ratio_tracking_transmittance(m, c, p, to_sun, rng);
-        }
-      }
-      if (options.max_order > 0 && events >= options.max_order) return radiance;
-      // Russian roulette with the albedo: the survivor's weight stays 1.
-      if (rng.uniform() >= m.ground_albedo) return radiance;
-      dir = reference::sample_cosine(normal, rng);
-      origin = p;
+    if (!s.hits_ground && order == 1 && options.sun && glm::dot(dir, sun_dir) >= cos_alpha) {
+      radiance += transmittance * c.solar_irradiance / solid_angle;
+    }
+    if (options.max_order > 0 && order >= options.max_order) return radiance;
+    if (decided && !scatters) return radiance;  // absorbed
+    if (scatters) {
+      double mu = rayleigh_at_scatter ? reference::sample_rayleigh_mu(rng.uniform())
+                                      : reference::sample_cornette_shanks_mu(m.mie_g, rng);
+      dir = reference::direction_about(dir, mu, 2.0 * reference::kPi * rng.uniform());
+      origin = scatter_point;
       continue;
     }
-    // Escaped to space.
-    radiance += options.environment_radiance;
-    if (events == 0 && options.sun && glm::dot(dir, sun_dir) >= cos_alpha) {
-      radiance += c.solar_irradiance / solid_angle;
+    if (!s.hits_ground) {
+      // Escaped to space.
+      return radiance + options.environment_radiance;
     }
-    return radiance;
+    // Lambertian ground: roulette with the albedo, the survivor's weight
+    // stays 1.
+    if (rng.uniform() >= m.ground_albedo) return radiance;
+    origin = normal * m.bottom_radius;
+    dir = reference::sample_cosine(normal, rng);
   }
 }
 

@@ -2,17 +2,17 @@
 // The ground truth: a CPU volumetric path tracer in double precision over a
 // spherical atmosphere (Medium) with a Lambertian ground.
 //
-// Per path, one channel (wavelength): free flights by delta tracking
-// against the channel's majorant (Woodcock et al. 1965); at a real
-// collision, absorption ends the path and scattering picks Rayleigh or Mie
-// in proportion to their coefficients; next-event estimation toward a
-// point sampled uniformly on the sun disk, with its transmittance by ratio
-// tracking (Novak et al. 2014) and zero inside the planet's shadow; the
-// path goes on in a direction sampled exactly from the chosen phase
-// function (Rayleigh, Cornette-Shanks for Mie), through unlimited
-// scattering orders. The ground reflects with its albedo as the Russian
-// roulette survival probability, so every path keeps weight 1 and ends by
-// escaping, by absorption or by roulette.
+// Per path, one channel (wavelength). Each segment is tracked through the
+// tentative collisions of the channel's majorant (Woodcock et al. 1965):
+// the sun's direct light is gathered along the whole segment by next-event
+// estimation toward a point sampled uniformly on the sun disk, weighted by
+// ratio-tracked transmittance (Novak et al. 2014) and zero inside the
+// planet's shadow; the path itself continues by analog delta tracking
+// (absorption ends it, scattering picks Rayleigh or Mie in proportion and a
+// direction sampled exactly from that phase function: Rayleigh or
+// Cornette-Shanks), through unlimited orders. The ground is Lambertian and
+// reflects with its albedo as the Russian roulette survival probability, so
+// every path keeps weight 1 and ends by escaping, absorption or roulette.
 //
 // Deterministic: each (scene seed, pixel, sample) has its own random stream
 // (reference/sampling.h); pixels are independent and their samples are

@@ -83,12 +83,12 @@ std::vector<Scene> canonical_scenes() {
   Placement mars = ground;
   mars.lat_deg = 20.0;
   scenes.push_back(make_scene("mars_noon", "Mars from the ground, sun 60 deg up", "mars", mars,
-                              20.0));
+                              10.0));
   Placement mars_sunset = sunset;
   mars_sunset.lat_deg = 20.0;
   mars_sunset.pitch_deg = 20.0;
   scenes.push_back(make_scene("mars_sunset", "Mars from the ground, facing the sun 2 deg up",
-                              "mars", mars_sunset, 40.0));
+                              "mars", mars_sunset, 20.0));
   Placement rock = ground;
   rock.sun_elevation_deg = 40.0;
   scenes.push_back(make_scene("asteroid_surface", "the asteroid's sky from its surface",

@@ -3,6 +3,7 @@
 // and unpacked into the shared Atmosphere struct.
 #define Real float
 #define Real3 vec3
+#define Real2 vec2
 #define IN(T) in T
 #define OUT(T) out T
 #include "atmosphere/shaders/atmosphere_functions.glsl"

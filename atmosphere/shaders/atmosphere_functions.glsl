@@ -2,7 +2,7 @@
 // and C++-with-GLM: shaders #include it with Real = float, and the C++
 // side (atmosphere/shared_math.h) includes it with Real = double, so the
 // ground truth and the tests run the very same formulas as the GPU.
-// The including side defines Real, Real3, IN(T), OUT(T) and the struct
+// The including side defines Real, Real2, Real3, IN(T), OUT(T) and the struct
 // Atmosphere below is shared as written.
 //
 // Conventions (Bruneton 2017): r is the distance from the planet's centre,
@@ -147,4 +147,136 @@ Real3 optical_depth_to_top(IN(Atmosphere) atmosphere, Real r, Real mu, int steps
 
 Real3 transmittance_to_top(IN(Atmosphere) atmosphere, Real r, Real mu, int steps) {
   return exp(-optical_depth_to_top(atmosphere, r, mu, steps));
+}
+
+// --- Ray and shell -----------------------------------------------------------
+// The first stretch of the ray o + t d (t >= 0) inside the shell
+// r_inner <= |x| <= r_outer: [t_enter, t_exit]. The stretch ends where the
+// ray meets the inner sphere (the ground) or leaves the outer one; an origin
+// inside the inner sphere enters the shell where it leaves that sphere.
+// Returns false when the ray never enters the shell.
+bool ray_shell(IN(Real3) o, IN(Real3) d, Real r_inner, Real r_outer, OUT(Real) t_enter,
+               OUT(Real) t_exit) {
+  Real outer_near, outer_far;
+  t_enter = Real(0.0);
+  t_exit = Real(0.0);
+  if (!ray_sphere(o, d, r_outer, outer_near, outer_far) || outer_far <= Real(0.0)) return false;
+  t_enter = max(outer_near, Real(0.0));
+  t_exit = outer_far;
+  Real inner_near, inner_far;
+  if (ray_sphere(o, d, r_inner, inner_near, inner_far)) {
+    if (inner_near > t_enter) {
+      t_exit = min(t_exit, inner_near);
+    } else if (inner_far > t_enter) {
+      t_enter = inner_far;  // starts inside the inner sphere
+    }
+  }
+  return t_exit > t_enter;
+}
+
+// --- Analytic optical depth of one exponential layer ---------------------------
+// e^(x^2) erfc(x) for x >= 0: Numerical Recipes' Chebyshev fit of erfc
+// (Press et al. 2007, section 6.2.2, fractional error below 1.2e-7), which
+// is already the scaled form t exp(P(t)), so it never overflows.
+Real erfcx(Real x) {
+  Real t = Real(1.0) / (Real(1.0) + Real(0.5) * x);
+  Real p = Real(-1.26551223) +
+           t * (Real(1.00002368) +
+           t * (Real(0.37409196) +
+           t * (Real(0.09678418) +
+           t * (Real(-0.18628806) +
+           t * (Real(0.27886807) +
+           t * (Real(-1.13520398) +
+           t * (Real(1.48851587) + t * (Real(-0.82215223) + t * Real(0.17087277)))))))));
+  return t * exp(p);
+}
+
+// The integral of exp(-(|x(t)| - r_ref) / H) along the ray from radius r
+// with zenith cosine mu >= 0 to infinity (Chapman 1931's grazing-incidence
+// integral, divided out as H exp(-(r - r_ref) / H) Ch). With z = H u the
+// height gained, the exact integral is
+//   H e^(-(r - r_ref)/H) int_0^inf e^-u (x + u) / sqrt(x^2 mu^2 + 2 x u + u^2) du,
+// x = r / H. Expanding 1 / sqrt(a + u^2), a = 2 x (c + u), c = x mu^2 / 2, to
+// first order in 1/x leaves three incomplete gamma integrals:
+//   sqrt(x/2) G(1/2) + (G(3/2) - c G(1/2)) / sqrt(2x)
+//   - (G(3/2) - 2 c G(1/2) + c^2 G(-1/2)) / (4 sqrt(2x)),
+// with G(s) = e^c Gamma(s, c): G(1/2) = sqrt(pi) erfcx(sqrt c),
+// G(3/2) = G(1/2) / 2 + sqrt c, c^2 G(-1/2) = 2 c (sqrt c - c G(1/2)).
+// The leading term alone is the classic erfc form of the Chapman function,
+// off by O(1/x) (1e-3 for Earth's Rayleigh layer); the neglected terms are
+// O(1/x^2), below 1e-5 for Earth.
+Real chapman_optical_depth_to_infinity(Real r_ref, Real scale_height, Real r, Real mu) {
+  Real x = r / scale_height;
+  Real c = Real(0.5) * x * mu * mu;
+  Real y = sqrt(c);
+  Real g_half = sqrt(kPi) * erfcx(y);
+  Real g_three_halves = Real(0.5) * g_half + y;
+  Real c2_g_minus_half = Real(2.0) * c * (y - c * g_half);
+  Real inv_sqrt_2x = Real(1.0) / sqrt(Real(2.0) * x);
+  Real sum = sqrt(Real(0.5) * x) * g_half + (g_three_halves - c * g_half) * inv_sqrt_2x -
+             Real(0.25) * inv_sqrt_2x * (g_three_halves - Real(2.0) * c * g_half + c2_g_minus_half);
+  return scale_height * exp(-(r - r_ref) / scale_height) * sum;
+}
+
+// The integral of density exp(-altitude / H) from radius r along zenith
+// cosine mu to the top boundary, for a ray that does not meet the ground
+// (multiply by a coefficient for optical depth). The part beyond the top is
+// subtracted; a downward ray is split at its perigee r_p = r sqrt(1 - mu^2),
+// where it is horizontal, into two upward halves.
+Real exponential_optical_depth_to_top(IN(Atmosphere) atmosphere, Real scale_height, Real r,
+                                      Real mu) {
+  Real R = atmosphere.bottom_radius;
+  Real top = atmosphere.top_radius;
+  // At the exit point r_top mu_top = r mu + d (d the distance travelled).
+  Real d = distance_to_top_boundary(atmosphere, r, mu);
+  Real mu_top = clamp_cosine((r * mu + d) / top);
+  Real beyond = chapman_optical_depth_to_infinity(R, scale_height, top, mu_top);
+  if (mu >= Real(0.0)) {
+    return chapman_optical_depth_to_infinity(R, scale_height, r, mu) - beyond;
+  }
+  Real r_p = r * sqrt(max(Real(1.0) - mu * mu, Real(0.0)));
+  return Real(2.0) * chapman_optical_depth_to_infinity(R, scale_height, r_p, Real(0.0)) -
+         chapman_optical_depth_to_infinity(R, scale_height, r, -mu) - beyond;
+}
+
+// --- Transmittance LUT parameterisation (Bruneton 2017, section 4) -----------
+// x_r = rho / H with rho the distance to the horizon and H its value at the
+// top; x_mu spreads the distance to the top between its extremes d_min and
+// d_max. Texel centres sit at 0.5 / n and 1 - 0.5 / n so that the extremes
+// are sampled exactly.
+Real texture_coord_from_unit_range(Real x, Real texture_size) {
+  return Real(0.5) / texture_size + x * (Real(1.0) - Real(1.0) / texture_size);
+}
+
+Real unit_range_from_texture_coord(Real u, Real texture_size) {
+  return (u - Real(0.5) / texture_size) / (Real(1.0) - Real(1.0) / texture_size);
+}
+
+Real2 transmittance_uv_from_r_mu(IN(Atmosphere) atmosphere, Real r, Real mu, Real2 size) {
+  Real H = sqrt(atmosphere.top_radius * atmosphere.top_radius -
+                atmosphere.bottom_radius * atmosphere.bottom_radius);
+  Real rho = safe_sqrt(r * r - atmosphere.bottom_radius * atmosphere.bottom_radius);
+  Real d = distance_to_top_boundary(atmosphere, r, mu);
+  Real d_min = atmosphere.top_radius - r;
+  Real d_max = rho + H;
+  Real x_mu = (d - d_min) / (d_max - d_min);
+  Real x_r = rho / H;
+  return Real2(texture_coord_from_unit_range(x_mu, size.x),
+               texture_coord_from_unit_range(x_r, size.y));
+}
+
+// The inverse: (r, mu) at texture coordinates uv. Returns (r, mu).
+Real2 transmittance_r_mu_from_uv(IN(Atmosphere) atmosphere, Real2 uv, Real2 size) {
+  Real x_mu = unit_range_from_texture_coord(uv.x, size.x);
+  Real x_r = unit_range_from_texture_coord(uv.y, size.y);
+  Real H = sqrt(atmosphere.top_radius * atmosphere.top_radius -
+                atmosphere.bottom_radius * atmosphere.bottom_radius);
+  Real rho = H * x_r;
+  Real r = sqrt(rho * rho + atmosphere.bottom_radius * atmosphere.bottom_radius);
+  Real d_min = atmosphere.top_radius - r;
+  Real d_max = rho + H;
+  Real d = d_min + x_mu * (d_max - d_min);
+  // Law of cosines at the top: top^2 = r^2 + d^2 + 2 r d mu.
+  Real mu = d == Real(0.0) ? Real(1.0) : (H * H - rho * rho - d * d) / (Real(2.0) * r * d);
+  return Real2(r, clamp_cosine(mu));
 }

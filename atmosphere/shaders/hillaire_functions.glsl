@@ -25,50 +25,36 @@ const int kSkyViewLutHeight = 100;
 const int kAerialPerspectiveSize = 32;
 
 // --- Texel-centred coordinates ----------------------------------------------
-// Bruneton 2017, GetTextureCoordFromUnitRange: the unit range maps onto the
-// first and last texel centres, so that both ends are sampled exactly
-// instead of being blended with the clamped border.
+// Bruneton 2017's unit range <-> texture coordinate (atmosphere_functions.glsl)
+// at the integer sizes of these LUTs.
 Real lut_coord_from_unit(Real x, int texture_size) {
-  return Real(0.5) / Real(texture_size) + x * (Real(1.0) - Real(1.0) / Real(texture_size));
+  return texture_coord_from_unit_range(x, Real(texture_size));
 }
 
 Real unit_from_lut_coord(Real u, int texture_size) {
-  return (u - Real(0.5) / Real(texture_size)) / (Real(1.0) - Real(1.0) / Real(texture_size));
+  return unit_range_from_texture_coord(u, Real(texture_size));
 }
 
 // --- Transmittance LUT (Bruneton 2017, sec. 4.1) -----------------------------
-// x_r = rho / H, with rho the distance to the horizon at r and H that at the
-// top; x_mu places the distance to the top, d, between its extremes for r:
-// d_min = top - r (straight up) and d_max = rho + H (along the horizon).
-// Texels crowd where transmittance varies fastest, near the horizon.
+// Bruneton's mapping (atmosphere_functions.glsl), held to the texel-centre
+// range: a ray below the horizon or a point under the ground reads the
+// LUT's edge, where the planet's shadow test takes over anyway.
 void transmittance_lut_uv_from_r_mu(IN(Atmosphere) atmosphere, Real r, Real mu, OUT(Real) u,
                                     OUT(Real) v) {
-  Real H = sqrt(atmosphere.top_radius * atmosphere.top_radius -
-                atmosphere.bottom_radius * atmosphere.bottom_radius);
-  Real rho = safe_sqrt(r * r - atmosphere.bottom_radius * atmosphere.bottom_radius);
-  Real d = distance_to_top_boundary(atmosphere, r, mu);
-  Real d_min = atmosphere.top_radius - r;
-  Real d_max = rho + H;
-  Real x_mu = d_max > d_min ? (d - d_min) / (d_max - d_min) : Real(0.0);
-  u = lut_coord_from_unit(clamp(x_mu, Real(0.0), Real(1.0)), kTransmittanceLutWidth);
-  v = lut_coord_from_unit(clamp(rho / H, Real(0.0), Real(1.0)), kTransmittanceLutHeight);
+  Real2 uv = transmittance_uv_from_r_mu(
+      atmosphere, r, mu, Real2(Real(kTransmittanceLutWidth), Real(kTransmittanceLutHeight)));
+  u = clamp(uv.x, lut_coord_from_unit(Real(0.0), kTransmittanceLutWidth),
+            lut_coord_from_unit(Real(1.0), kTransmittanceLutWidth));
+  v = clamp(uv.y, lut_coord_from_unit(Real(0.0), kTransmittanceLutHeight),
+            lut_coord_from_unit(Real(1.0), kTransmittanceLutHeight));
 }
 
 void transmittance_lut_r_mu_from_uv(IN(Atmosphere) atmosphere, Real u, Real v, OUT(Real) r,
                                     OUT(Real) mu) {
-  Real x_mu = unit_from_lut_coord(u, kTransmittanceLutWidth);
-  Real x_r = unit_from_lut_coord(v, kTransmittanceLutHeight);
-  Real H = sqrt(atmosphere.top_radius * atmosphere.top_radius -
-                atmosphere.bottom_radius * atmosphere.bottom_radius);
-  Real rho = H * x_r;
-  r = sqrt(rho * rho + atmosphere.bottom_radius * atmosphere.bottom_radius);
-  Real d_min = atmosphere.top_radius - r;
-  Real d_max = rho + H;
-  Real d = d_min + x_mu * (d_max - d_min);
-  // Law of cosines in the triangle centre - point - exit: top^2 = r^2 + d^2
-  // + 2 r d mu, with top^2 - r^2 = H^2 - rho^2.
-  mu = d == Real(0.0) ? Real(1.0) : (H * H - rho * rho - d * d) / (Real(2.0) * r * d);
-  mu = clamp_cosine(mu);
+  Real2 r_mu = transmittance_r_mu_from_uv(
+      atmosphere, Real2(u, v), Real2(Real(kTransmittanceLutWidth), Real(kTransmittanceLutHeight)));
+  r = r_mu.x;
+  mu = r_mu.y;
 }
 
 // --- Multiple-scattering LUT (Hillaire 2020, sec. 5.5) ------------------------
