@@ -9,6 +9,7 @@ namespace planet::apps {
 
 void add_capture_command(CLI::App& app);
 void add_bench_command(CLI::App& app);
+void add_accuracy_command(CLI::App& app);
 void add_reference_command(CLI::App& app);
 // `planet probe <quantity>`: the probe parent, to which modules add their
 // quantities (transmittance, sky, sun, ...).

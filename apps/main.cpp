@@ -17,6 +17,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   planet::apps::add_capture_command(app);
   planet::apps::add_bench_command(app);
+  planet::apps::add_accuracy_command(app);
   planet::apps::add_reference_command(app);
   [[maybe_unused]] CLI::App& probe = planet::apps::add_probe_command(app);
   planet::apps::add_probe_atmosphere_commands(probe);

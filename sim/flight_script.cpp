@@ -81,7 +81,7 @@ FlightScript load_flight_script(const std::filesystem::path& file) {
   s.vertical_fov = glm::radians(root.number_or("vertical_fov_deg", 60.0, 1.0, 170.0));
   // The name is checked against the available techniques by the renderer
   // (sim knows no GL), with this file and field in the message.
-  s.technique = root.string_or("technique", "raymarch");
+  s.technique = root.string_or("technique", "hillaire");
 
   // The sun: by the clock and the body's ephemeris, or fixed by hand.
   if (root.has("start_utc") == root.has("sun")) {

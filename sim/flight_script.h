@@ -46,7 +46,7 @@ struct FlightScript {
   int width = 0, height = 0;
   double frame_rate = 0;
   double exposure = 1;  // multiplies radiance before tone mapping; the default for keyframes
-  std::string technique = "raymarch";
+  std::string technique = "hillaire";
   // With "start_utc" the sun follows the body's ephemeris and the clock
   // (keyframes may set it with "utc" or "clock_s"); without it, the fixed
   // "sun" block holds.

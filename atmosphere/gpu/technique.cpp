@@ -1,5 +1,6 @@
 #include "atmosphere/gpu/technique.h"
 
+#include "atmosphere/gpu/hillaire/hillaire_technique.h"
 #include "atmosphere/gpu/raymarch/raymarch_technique.h"
 #include "sim/error.h"
 
@@ -8,10 +9,11 @@
 
 namespace planet {
 
-std::vector<std::string> technique_names() { return {"raymarch"}; }
+std::vector<std::string> technique_names() { return {"raymarch", "hillaire"}; }
 
 std::unique_ptr<AtmosphereTechnique> make_technique(const std::string& name) {
   if (name == "raymarch") return std::make_unique<RaymarchTechnique>();
+  if (name == "hillaire") return std::make_unique<HillaireTechnique>();
   throw InputError(fmt::format("unknown atmosphere technique '{}' (available: {})", name,
                                fmt::join(technique_names(), ", ")));
 }

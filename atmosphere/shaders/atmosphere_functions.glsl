@@ -92,9 +92,12 @@ Real layer_density(IN(DensityLayer) layer, Real altitude) {
   return clamp(density, Real(0.0), Real(1.0));
 }
 
+// Below the bottom (a ray grazing the ground, rounded a hair under it) the
+// air is that of the ground, not the first layer's extrapolation.
 Real profile_density(IN(DensityProfile) profile, Real altitude) {
-  return altitude < profile.layers[0].width ? layer_density(profile.layers[0], altitude)
-                                            : layer_density(profile.layers[1], altitude);
+  Real h = max(altitude, Real(0.0));
+  return h < profile.layers[0].width ? layer_density(profile.layers[0], h)
+                                     : layer_density(profile.layers[1], h);
 }
 
 // Extinction (1/m) per channel at an altitude above the bottom radius.

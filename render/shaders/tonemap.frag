@@ -13,7 +13,17 @@ vec3 srgb_encode(vec3 c) {
   return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));
 }
 
+// Jimenez 2014, interleaved gradient noise: a fixed per-pixel pattern in
+// [0, 1), so that dithered frames stay identical run to run.
+float dither_noise(vec2 pixel) {
+  return fract(52.9829189 * fract(dot(pixel, vec2(0.06711056, 0.00583715))));
+}
+
 void main() {
   vec3 hdr = texelFetch(u_hdr, ivec2(gl_FragCoord.xy), 0).rgb;
-  o_color = vec4(srgb_encode(aces_fit(hdr * u_exposure)), 1.0);
+  vec3 color = srgb_encode(aces_fit(hdr * u_exposure));
+  // Half a step of the 8-bit target either way, after tone mapping: smooth
+  // skies quantise into noise finer than the eye, not into bands.
+  color += (dither_noise(gl_FragCoord.xy) - 0.5) / 255.0;
+  o_color = vec4(color, 1.0);
 }

@@ -1,0 +1,129 @@
+// planet accuracy: a GPU technique against the path-traced ground truth on
+// canonical scenes, as a table of RMSE and relative RMSE per channel (sun
+// disk left out), with the reference's own noise estimated beside it, the
+// relative RMSE over the open sky alone, and the mean signed error (bias);
+// the images are written where a person can look at them.
+#include "apps/commands.h"
+#include "render/gl/context.h"
+#include "render/reference_cache.h"
+#include "render/technique_accuracy.h"
+#include "sim/error.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace planet::apps {
+
+namespace {
+
+struct AccuracyArgs {
+  std::string technique = "hillaire", out;
+  std::vector<std::string> scenes;
+  int spp = 4096;
+  int width = 64, height = 32;
+};
+
+// The reference at `spp` shares its first spp/4 paths per pixel with the
+// one at spp/4, so their difference has variance (3/4) sigma^2 / (spp/4):
+// the noise of the spp render is that RMS / sqrt(3/4) / 2.
+std::array<double, 3> reference_noise(const Scene& scene, const ImageRGB& reference, int spp) {
+  ImageRGB quarter = reference_image(scene, spp / 4);
+  std::array<double, 3> d = rms_difference(reference, quarter, sun_disk_mask(scene));
+  for (double& v : d) v = v / std::sqrt(0.75) / 2.0;
+  return d;
+}
+
+// Small images repeated pixel by pixel up to at least 256 columns, so that
+// a 32x16 comparison can be looked at.
+ImageRGB enlarged(const ImageRGB& image) {
+  int k = std::max(1, 256 / std::max(image.width, 1));
+  ImageRGB out{image.width * k, image.height * k, {}};
+  out.pixels.resize(size_t(out.width) * size_t(out.height) * 3);
+  for (int y = 0; y < out.height; ++y) {
+    for (int x = 0; x < out.width; ++x) {
+      for (int c = 0; c < 3; ++c) {
+        out.pixels[(size_t(y) * size_t(out.width) + size_t(x)) * 3 + size_t(c)] =
+            image.pixels[(size_t(y / k) * size_t(image.width) + size_t(x / k)) * 3 + size_t(c)];
+      }
+    }
+  }
+  return out;
+}
+
+void write_images(const std::filesystem::path& dir, const Scene& scene, const ImageRGB& technique,
+                  const ImageRGB& reference, const TechniqueAccuracy& accuracy) {
+  std::filesystem::create_directories(dir);
+  write_exr(dir / (scene.name + "_technique.exr"), technique);
+  write_tone_mapped_png(dir / (scene.name + "_technique.png"), enlarged(technique),
+                        scene.exposure);
+  write_exr(dir / (scene.name + "_reference.exr"), reference);
+  write_tone_mapped_png(dir / (scene.name + "_reference.png"), enlarged(reference),
+                        scene.exposure);
+  // The error image: |technique - reference| / mean reference, shown so
+  // that 10% of the mean is mid-grey-bright (exposure 5 through the curve).
+  ImageRGB error = accuracy.signed_error;
+  for (float& v : error.pixels) v = std::abs(v);
+  write_exr(dir / (scene.name + "_error.exr"), error);
+  write_tone_mapped_png(dir / (scene.name + "_error.png"), enlarged(error), 5.0);
+}
+
+void run_accuracy(const AccuracyArgs& args) {
+  std::vector<Scene> scenes;
+  if (args.scenes.empty()) {
+    scenes = canonical_scenes();
+  } else {
+    for (const auto& name : args.scenes) scenes.push_back(find_scene(name));
+  }
+  auto context = GlContext::create_headless();
+  std::printf("%-16s %-3s %11s %11s %9s %9s %9s %6s\n", "scene", "ch", "RMSE", "mean ref",
+              "rel RMSE", "ref noise", "sky only", "bias");
+  for (Scene scene : scenes) {
+    scene.width = args.width;
+    scene.height = args.height;
+    Body body = scene_body(scene);
+    if (!body.has_atmosphere()) continue;
+    ImageRGB reference = reference_image(scene, args.spp);
+    ImageRGB technique = render_scene_with(scene, args.technique);
+    TechniqueAccuracy accuracy = measure_accuracy(scene, technique, reference);
+    std::array<double, 3> noise = reference_noise(scene, reference, args.spp);
+    const char* names[3] = {"R", "G", "B"};
+    for (size_t c = 0; c < 3; ++c) {
+      const ChannelError& e = accuracy.channels[c];
+      double bias = 0;
+      for (size_t i = c; i < accuracy.signed_error.pixels.size(); i += 3) {
+        bias += accuracy.signed_error.pixels[i];
+      }
+      bias /= double(std::max(accuracy.pixels, 1));
+      std::printf("%-16s %-3s %11.4g %11.4g %8.2f%% %8.2f%% %8.2f%% %+5.1f%%\n",
+                  scene.name.c_str(), names[c], e.rmse, e.mean_reference, 100 * e.relative(),
+                  100 * noise[c] / std::max(e.mean_reference, 1e-30),
+                  100 * accuracy.sky_channels[c].relative(), 100 * bias);
+    }
+    if (!args.out.empty()) write_images(args.out, scene, technique, reference, accuracy);
+    std::fflush(stdout);
+  }
+}
+
+}  // namespace
+
+void add_accuracy_command(CLI::App& app) {
+  auto args = std::make_shared<AccuracyArgs>();
+  CLI::App* cmd = app.add_subcommand(
+      "accuracy", "Measure an atmosphere technique against the path-traced ground truth");
+  cmd->add_option("--technique", args->technique, "Atmosphere technique (default: hillaire)");
+  cmd->add_option("--scene", args->scenes, "Canonical scenes (default: all with an atmosphere)");
+  cmd->add_option("--spp", args->spp, "Reference paths per pixel (cached)")
+      ->check(CLI::Range(4, 1 << 20));
+  cmd->add_option("--width", args->width, "Image width (default 64)")->check(CLI::Range(1, 4096));
+  cmd->add_option("--height", args->height, "Image height (default 32)")
+      ->check(CLI::Range(1, 4096));
+  cmd->add_option("--out", args->out, "Folder for technique, reference and error images");
+  cmd->callback([args] { run_accuracy(*args); });
+}
+
+}  // namespace planet::apps

@@ -1,0 +1,41 @@
+// What every pass of the hillaire technique shares: the model's block, the
+// LUT lookups the shared integrals call, and the integrals themselves
+// (atmosphere/shaders/hillaire_functions.glsl, also compiled on the CPU).
+#include "atmosphere/shaders/atmosphere_block.glsl"
+
+#define INOUT(T) inout T
+
+Real3 transmittance_lookup(IN(Atmosphere) atmosphere, Real r, Real mu);
+Real3 multiple_scattering_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s);
+
+#include "atmosphere/shaders/hillaire_functions.glsl"
+
+#ifdef TRANSMITTANCE_PASS
+// The transmittance pass integrates directly and samples no LUT.
+Real3 transmittance_lookup(IN(Atmosphere) atmosphere, Real r, Real mu) {
+  return transmittance_to_top(atmosphere, r, mu, kTransmittanceSteps);
+}
+#else
+layout(binding = 2) uniform sampler2D u_transmittance_lut;
+
+Real3 transmittance_lookup(IN(Atmosphere) atmosphere, Real r, Real mu) {
+  float u, v;
+  transmittance_lut_uv_from_r_mu(atmosphere, r, mu, u, v);
+  return texture(u_transmittance_lut, vec2(u, v)).rgb;
+}
+#endif
+
+#if defined(TRANSMITTANCE_PASS) || defined(MULTIPLE_SCATTERING_PASS)
+// The multiple-scattering pass computes the LUT this would read.
+Real3 multiple_scattering_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s) {
+  return vec3(0.0);
+}
+#else
+layout(binding = 3) uniform sampler2D u_multiple_scattering_lut;
+
+Real3 multiple_scattering_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s) {
+  float u, v;
+  multiple_scattering_lut_uv_from_r_mu_s(atmosphere, r, mu_s, u, v);
+  return texture(u_multiple_scattering_lut, vec2(u, v)).rgb;
+}
+#endif

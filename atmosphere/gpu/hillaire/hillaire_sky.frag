@@ -1,0 +1,142 @@
+// Hillaire 2020, sec. 5.3-5.6: the sky, the sun disk and the aerial
+// perspective over the opaque surfaces. Two paths, weighted by
+// u_lut_weight, which the technique sets from the camera's altitude:
+//  - the LUT path (inside the atmosphere): the sky-view LUT for open sky,
+//    the froxel volume for surfaces within its range and a per-pixel march
+//    beyond it;
+//  - the per-pixel path (high up and in space): a march of every pixel with
+//    the same multiple-scattering LUT.
+// Between the two altitudes both run and are blended, so that nothing pops.
+#include "atmosphere/gpu/hillaire/hillaire_common.glsl"
+
+in vec2 v_ndc;
+layout(location = 0) out vec4 o_radiance;
+
+layout(binding = 0) uniform sampler2D u_depth;
+layout(binding = 1) uniform sampler2D u_surface;
+layout(binding = 4) uniform sampler2D u_sky_view_lut;
+layout(binding = 5) uniform sampler3D u_aerial_scattering;
+layout(binding = 6) uniform sampler3D u_aerial_transmittance;
+
+uniform vec3 u_camera;  // atmosphere space, metres
+uniform float u_camera_r;  // |camera| from double, lifted above the ground
+uniform mat3 u_ray_from_ndc;
+uniform vec3 u_sun_dir;
+uniform float u_near;
+uniform vec2 u_viewport;
+uniform mat3 u_local_from_atmo;  // rows: toward the sun's azimuth, across, up
+uniform float u_lut_weight;
+uniform float u_aerial_range;
+
+// A march from the camera over [0, t_max] of the ray: luminance (with the
+// solar irradiance) and transmittance. From outside the atmosphere the
+// march starts where the ray enters it, so that the samples keep their
+// precision however far the camera is.
+void march(vec3 camera, vec3 dir, float t_max, bool with_ground, out vec3 luminance,
+           out vec3 transmittance) {
+  luminance = vec3(0.0);
+  transmittance = vec3(1.0);
+  Atmosphere atmosphere = block_atmosphere();
+  float t_top_near, t_top_far;
+  if (!ray_sphere(camera, dir, atmosphere.top_radius, t_top_near, t_top_far) || t_top_far <= 0.0) {
+    return;
+  }
+  float t_start = max(t_top_near, 0.0);
+  float t_end = min(t_top_far, t_max);
+  if (t_end <= t_start) return;
+  vec3 origin = camera + t_start * dir;
+  vec3 f_ms;
+  integrate_scattering(atmosphere, origin, dir, 0.0, t_end - t_start, u_sun_dir, PER_PIXEL_STEPS,
+                       false, with_ground, luminance, transmittance, f_ms);
+  luminance *= atmosphere.solar_irradiance;
+}
+
+vec3 sun_disk(vec3 dir, vec3 transmittance) {
+  Atmosphere atmosphere = block_atmosphere();
+  return transmittance * sun_disk_radiance(atmosphere, dot(dir, u_sun_dir));
+}
+
+// Aerial perspective of a surface at distance t from the froxel volume.
+void froxel(float t, out vec3 scattering, out vec3 transmittance) {
+  vec2 uv = gl_FragCoord.xy / u_viewport;
+  float w = aerial_slice_coord(u_aerial_range, t);
+  float w0 = 0.5 / float(kAerialPerspectiveSize);
+  scattering = texture(u_aerial_scattering, vec3(uv, max(w, w0))).rgb;
+  transmittance = texture(u_aerial_transmittance, vec3(uv, max(w, w0))).rgb;
+  // Nearer than the first slice's centre: fade from nothing at the camera.
+  if (w < w0) {
+    float f = (w * w) / (w0 * w0);
+    scattering *= f;
+    transmittance = mix(vec3(1.0), transmittance, f);
+  }
+  scattering *= block_atmosphere().solar_irradiance;
+}
+
+void main() {
+  Atmosphere atmosphere = block_atmosphere();
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  float depth = texelFetch(u_depth, pixel, 0).r;
+  vec3 surface = depth > 0.0 ? texelFetch(u_surface, pixel, 0).rgb : vec3(0.0);
+
+  vec3 ray = u_ray_from_ndc * vec3(v_ndc, 1.0);
+  float ray_scale = length(ray);
+  vec3 dir = ray / ray_scale;
+  // Reversed-Z with an infinite far plane: view depth = near / depth.
+  const float kFar = 3.0e38;
+  float t_surface = depth > 0.0 ? ray_scale * u_near / depth : kFar;
+
+  // A camera a hair below the bottom sphere (the ground mesh is an
+  // ellipsoid mapped onto it, up to float rounding) is lifted onto it.
+  vec3 camera = u_camera;
+  float r_camera = length(camera);
+  float r_min = atmosphere.bottom_radius + 1.0;
+  if (r_camera < r_min) camera = r_camera > 0.0 ? camera * (r_min / r_camera) : vec3(0, 0, r_min);
+
+  float t_ground_near, t_ground_far;
+  bool hits_ground = ray_sphere(camera, dir, atmosphere.bottom_radius, t_ground_near,
+                                t_ground_far) && t_ground_near > 0.0;
+  bool open_sky = depth == 0.0 && !hits_ground;
+
+  vec3 lut_radiance = vec3(0.0);
+  if (u_lut_weight > 0.0) {
+    if (depth > 0.0) {
+      // Froxels near, the per-pixel march beyond; blended over the last
+      // fifth of the volume's range so that no edge shows on the ground.
+      float blend = smoothstep(0.8 * u_aerial_range, u_aerial_range, t_surface);
+      vec3 near_radiance = vec3(0.0), far_radiance = vec3(0.0);
+      if (blend < 1.0) {
+        vec3 scattering, transmittance;
+        froxel(t_surface, scattering, transmittance);
+        near_radiance = scattering + transmittance * surface;
+      }
+      if (blend > 0.0) {
+        vec3 luminance, transmittance;
+        march(camera, dir, t_surface, false, luminance, transmittance);
+        far_radiance = luminance + transmittance * surface;
+      }
+      lut_radiance = mix(near_radiance, far_radiance, blend);
+    } else {
+      vec3 local = u_local_from_atmo * dir;
+      float u, v;
+      sky_view_lut_uv_from_view(atmosphere, u_camera_r, local.z, atan(local.y, local.x), u, v);
+      lut_radiance = texture(u_sky_view_lut, vec2(u, v)).rgb * atmosphere.solar_irradiance;
+      if (open_sky) {
+        float mu = dot(camera, dir) / length(camera);
+        lut_radiance += sun_disk(dir, transmittance_lookup(atmosphere, u_camera_r, mu));
+      }
+    }
+  }
+
+  vec3 march_radiance = vec3(0.0);
+  if (u_lut_weight < 1.0) {
+    float t_max = depth > 0.0 ? t_surface : (hits_ground ? t_ground_near : kFar);
+    vec3 luminance, transmittance;
+    march(camera, dir, t_max, depth == 0.0 && hits_ground, luminance, transmittance);
+    march_radiance = luminance + transmittance * surface;
+    if (open_sky) march_radiance += sun_disk(dir, transmittance);
+  }
+
+  vec3 radiance = mix(march_radiance, lut_radiance, u_lut_weight);
+  // Within half-float range, so that a 16-bit target cannot overflow.
+  o_radiance = vec4(min(radiance, vec3(6.0e4)), 1.0);
+}

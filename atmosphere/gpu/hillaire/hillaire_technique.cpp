@@ -1,0 +1,197 @@
+#include "atmosphere/gpu/hillaire/hillaire_technique.h"
+
+#include "atmosphere/gpu/atmosphere_block.h"
+#include "atmosphere/hillaire_math.h"
+#include "render/gl/timer.h"
+
+#include <fmt/format.h>
+#include <glm/gtc/type_ptr.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace planet {
+
+namespace {
+
+constexpr GLuint kGroupSize = 8;  // local_size_x and _y of every compute pass
+
+GLuint groups(int size) { return GLuint((size + int(kGroupSize) - 1) / int(kGroupSize)); }
+
+Texture make_texture_3d(GLenum internal_format, int size) {
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_3D, 1, &id);
+  glTextureStorage3D(id, 1, internal_format, size, size, size);
+  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(id, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+  return Texture(id);
+}
+
+double smoothstep(double e0, double e1, double x) {
+  double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
+  return t * t * (3.0 - 2.0 * t);
+}
+
+// Rows: the horizontal direction toward the sun's azimuth, the one across
+// it, and up at the camera. Any horizontal axis serves when the sun stands
+// at the zenith (or nadir), where the sky has no azimuth to follow.
+glm::dmat3 local_from_atmo(const glm::dvec3& camera, const glm::dvec3& sun) {
+  double r = glm::length(camera);
+  glm::dvec3 up = r > 0.0 ? camera / r : glm::dvec3(0, 0, 1);
+  glm::dvec3 toward_sun = sun - up * glm::dot(up, sun);
+  if (glm::length(toward_sun) < 1e-6) {
+    glm::dvec3 any = std::abs(up.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+    toward_sun = glm::cross(up, any);
+  }
+  glm::dvec3 x = glm::normalize(toward_sun);
+  glm::dvec3 y = glm::cross(up, x);
+  return glm::transpose(glm::dmat3(x, y, up));
+}
+
+void bind_image(GLuint unit, GLuint texture, GLenum format, bool layered) {
+  glBindImageTexture(unit, texture, 0, layered ? GL_TRUE : GL_FALSE, 0, GL_WRITE_ONLY, format);
+}
+
+}  // namespace
+
+HillaireTechnique::HillaireTechnique(Settings settings)
+    : settings_(settings),
+      transmittance_program_(Program::compute("atmosphere/gpu/hillaire/transmittance_lut.comp",
+                                              {"TRANSMITTANCE_PASS 1"})),
+      multiple_scattering_program_(Program::compute(
+          "atmosphere/gpu/hillaire/multiple_scattering_lut.comp", {"MULTIPLE_SCATTERING_PASS 1"})),
+      sky_view_program_(Program::compute("atmosphere/gpu/hillaire/sky_view_lut.comp",
+                                         {fmt::format("SKY_VIEW_STEPS {}", settings.sky_view_steps)})),
+      aerial_program_(
+          Program::compute("atmosphere/gpu/hillaire/aerial_perspective.comp",
+                           {fmt::format("AERIAL_SUBSTEPS {}", settings.aerial_substeps)})),
+      sky_program_(Program::graphics("render/shaders/fullscreen.vert",
+                                     "atmosphere/gpu/hillaire/hillaire_sky.frag",
+                                     {fmt::format("PER_PIXEL_STEPS {}", settings.per_pixel_steps)})),
+      transmittance_lut_(make_texture_2d(GL_RGBA32F, shared::kTransmittanceLutWidth,
+                                         shared::kTransmittanceLutHeight)),
+      multiple_scattering_lut_(make_texture_2d(GL_RGBA32F, shared::kMultipleScatteringLutSize,
+                                               shared::kMultipleScatteringLutSize)),
+      sky_view_lut_(
+          make_texture_2d(GL_RGBA16F, shared::kSkyViewLutWidth, shared::kSkyViewLutHeight)),
+      aerial_scattering_(make_texture_3d(GL_RGBA16F, shared::kAerialPerspectiveSize)),
+      aerial_transmittance_(make_texture_3d(GL_RGBA16F, shared::kAerialPerspectiveSize)),
+      block_(make_buffer(sizeof(AtmosphereBlock), nullptr)) {
+  // The sky-view LUT spans the full circle of azimuth: it wraps.
+  glTextureParameteri(sky_view_lut_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+  GLuint vao = 0;
+  glCreateVertexArrays(1, &vao);
+  empty_vao_ = VertexArray(vao);
+}
+
+void HillaireTechnique::update(const AtmosphereModel& model) {
+  // Only the parameters are kept: every LUT is rebuilt from them each
+  // frame, so a change shows in the next frame with nothing stale.
+  model_ = model;
+  AtmosphereBlock block = make_atmosphere_block(model);
+  glNamedBufferSubData(block_.id(), 0, sizeof(block), &block);
+}
+
+void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
+  const double bottom = model_.bottom_radius, top = model_.top_radius;
+  const double r = glm::length(frame.camera_atmo);
+  const double altitude = r - bottom;
+  const double thickness = top - bottom;
+  switch (settings_.path) {
+    case Path::kLuts: lut_weight_ = 1.0; break;
+    case Path::kPerPixel: lut_weight_ = 0.0; break;
+    case Path::kByAltitude:
+      lut_weight_ = 1.0 - smoothstep(settings_.switch_start * thickness,
+                                     settings_.switch_end * thickness, altitude);
+      break;
+  }
+  // The LUTs describe the sky seen from inside the shell; a camera below
+  // the ground is lifted onto it, as the sky pass does.
+  const double r_min = bottom + 1.0;
+  glm::dvec3 camera = frame.camera_atmo;
+  if (r < r_min) camera = r > 0.0 ? camera * (r_min / r) : glm::dvec3(0, 0, r_min);
+  const float lut_r = float(std::clamp(r, r_min, top));
+  aerial_range_ = std::max(settings_.aerial_range, 4.0 * altitude);
+  const glm::dvec3 sun(frame.sun_dir_atmo);
+  const glm::dmat3 local = local_from_atmo(camera, sun);
+  const glm::vec3 sun_local(local * sun);
+
+  glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, block_.id());
+  const GLbitfield barrier = GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT;
+
+  timer.begin("transmittance_lut");
+  transmittance_program_.use();
+  bind_image(0, transmittance_lut_.id(), GL_RGBA32F, false);
+  glDispatchCompute(groups(shared::kTransmittanceLutWidth), groups(shared::kTransmittanceLutHeight),
+                    1);
+  glMemoryBarrier(barrier);
+  timer.end();
+
+  glBindTextureUnit(2, transmittance_lut_.id());
+  timer.begin("multiple_scattering_lut");
+  multiple_scattering_program_.use();
+  bind_image(0, multiple_scattering_lut_.id(), GL_RGBA32F, false);
+  glDispatchCompute(groups(shared::kMultipleScatteringLutSize),
+                    groups(shared::kMultipleScatteringLutSize), 1);
+  glMemoryBarrier(barrier);
+  timer.end();
+  glBindTextureUnit(3, multiple_scattering_lut_.id());
+
+  // No sky-view LUT and no froxels where the per-pixel path draws alone
+  // (high up, deep space): a frame models no more than it shows.
+  if (lut_weight_ > 0.0) {
+    timer.begin("sky_view_lut");
+    sky_view_program_.use();
+    glUniform1f(sky_view_program_.uniform("u_camera_r"), lut_r);
+    glUniform3fv(sky_view_program_.uniform("u_sun_dir_local"), 1, glm::value_ptr(sun_local));
+    bind_image(0, sky_view_lut_.id(), GL_RGBA16F, false);
+    glDispatchCompute(groups(shared::kSkyViewLutWidth), groups(shared::kSkyViewLutHeight), 1);
+    glMemoryBarrier(barrier);
+    timer.end();
+
+    timer.begin("aerial_perspective");
+    aerial_program_.use();
+    glUniform3fv(aerial_program_.uniform("u_camera"), 1, glm::value_ptr(glm::vec3(camera)));
+    glUniformMatrix3fv(aerial_program_.uniform("u_ray_from_ndc"), 1, GL_FALSE,
+                       glm::value_ptr(frame.atmo_ray_from_ndc));
+    glUniform3fv(aerial_program_.uniform("u_sun_dir"), 1, glm::value_ptr(frame.sun_dir_atmo));
+    glUniform1f(aerial_program_.uniform("u_range"), float(aerial_range_));
+    bind_image(0, aerial_scattering_.id(), GL_RGBA16F, true);
+    bind_image(1, aerial_transmittance_.id(), GL_RGBA16F, true);
+    glDispatchCompute(groups(shared::kAerialPerspectiveSize),
+                      groups(shared::kAerialPerspectiveSize), 1);
+    glMemoryBarrier(barrier);
+    timer.end();
+  }
+
+  timer.begin("sky");
+  glBindFramebuffer(GL_FRAMEBUFFER, frame.target_framebuffer);
+  glViewport(0, 0, frame.width, frame.height);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  sky_program_.use();
+  glBindTextureUnit(0, frame.depth_texture);
+  glBindTextureUnit(1, frame.surface_texture);
+  glBindTextureUnit(4, sky_view_lut_.id());
+  glBindTextureUnit(5, aerial_scattering_.id());
+  glBindTextureUnit(6, aerial_transmittance_.id());
+  glUniform3fv(sky_program_.uniform("u_camera"), 1, glm::value_ptr(glm::vec3(frame.camera_atmo)));
+  glUniform1f(sky_program_.uniform("u_camera_r"), lut_r);
+  glUniformMatrix3fv(sky_program_.uniform("u_ray_from_ndc"), 1, GL_FALSE,
+                     glm::value_ptr(frame.atmo_ray_from_ndc));
+  glUniform3fv(sky_program_.uniform("u_sun_dir"), 1, glm::value_ptr(frame.sun_dir_atmo));
+  glUniform1f(sky_program_.uniform("u_near"), frame.near);
+  glUniform2f(sky_program_.uniform("u_viewport"), float(frame.width), float(frame.height));
+  glUniformMatrix3fv(sky_program_.uniform("u_local_from_atmo"), 1, GL_FALSE,
+                     glm::value_ptr(glm::mat3(local)));
+  glUniform1f(sky_program_.uniform("u_lut_weight"), float(lut_weight_));
+  glUniform1f(sky_program_.uniform("u_aerial_range"), float(aerial_range_));
+  glBindVertexArray(empty_vao_.id());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  timer.end();
+}
+
+}  // namespace planet

@@ -1,0 +1,305 @@
+// Hillaire 2020, "A Scalable and Production Ready Sky and Atmosphere
+// Rendering Technique": the LUT mappings and the scattering integrals, in
+// the common subset of GLSL and C++-with-GLM (see atmosphere_functions.glsl,
+// which must be included first). The shaders of atmosphere/gpu/hillaire and
+// the CPU tests (atmosphere/hillaire_math.h) compile this same file.
+//
+// The including side declares, before including this file (and defines
+// anywhere):
+//   INOUT(T)                                    in-out parameters
+//   Real3 transmittance_lookup(IN(Atmosphere), Real r, Real mu)
+//       transmittance from radius r to the top along zenith cosine mu
+//   Real3 multiple_scattering_lookup(IN(Atmosphere), Real r, Real mu_s)
+//       Psi_ms per unit solar irradiance (Hillaire 2020, eq. 10)
+// On the GPU these sample the LUTs; on the CPU they integrate directly.
+
+const int kTransmittanceLutWidth = 256;
+const int kTransmittanceLutHeight = 64;
+const int kTransmittanceSteps = 40;
+const int kMultipleScatteringLutSize = 32;
+// 8 x 8 stratified directions over the sphere (Hillaire 2020, sec. 5.5: 64).
+const int kMultipleScatteringDirectionsSqrt = 8;
+const int kMultipleScatteringSteps = 20;
+const int kSkyViewLutWidth = 200;
+const int kSkyViewLutHeight = 100;
+const int kAerialPerspectiveSize = 32;
+
+// --- Texel-centred coordinates ----------------------------------------------
+// Bruneton 2017's unit range <-> texture coordinate (atmosphere_functions.glsl)
+// at the integer sizes of these LUTs.
+Real lut_coord_from_unit(Real x, int texture_size) {
+  return texture_coord_from_unit_range(x, Real(texture_size));
+}
+
+Real unit_from_lut_coord(Real u, int texture_size) {
+  return unit_range_from_texture_coord(u, Real(texture_size));
+}
+
+// --- Transmittance LUT (Bruneton 2017, sec. 4.1) -----------------------------
+// Bruneton's mapping (atmosphere_functions.glsl), held to the texel-centre
+// range: a ray below the horizon or a point under the ground reads the
+// LUT's edge, where the planet's shadow test takes over anyway.
+void transmittance_lut_uv_from_r_mu(IN(Atmosphere) atmosphere, Real r, Real mu, OUT(Real) u,
+                                    OUT(Real) v) {
+  Real2 uv = transmittance_uv_from_r_mu(
+      atmosphere, r, mu, Real2(Real(kTransmittanceLutWidth), Real(kTransmittanceLutHeight)));
+  u = clamp(uv.x, lut_coord_from_unit(Real(0.0), kTransmittanceLutWidth),
+            lut_coord_from_unit(Real(1.0), kTransmittanceLutWidth));
+  v = clamp(uv.y, lut_coord_from_unit(Real(0.0), kTransmittanceLutHeight),
+            lut_coord_from_unit(Real(1.0), kTransmittanceLutHeight));
+}
+
+void transmittance_lut_r_mu_from_uv(IN(Atmosphere) atmosphere, Real u, Real v, OUT(Real) r,
+                                    OUT(Real) mu) {
+  Real2 r_mu = transmittance_r_mu_from_uv(
+      atmosphere, Real2(u, v), Real2(Real(kTransmittanceLutWidth), Real(kTransmittanceLutHeight)));
+  r = r_mu.x;
+  mu = r_mu.y;
+}
+
+// --- Multiple-scattering LUT (Hillaire 2020, sec. 5.5) ------------------------
+// Psi_ms depends on altitude and sun zenith only: x = (mu_s + 1) / 2 and
+// y = altitude / thickness, both texel-centred.
+void multiple_scattering_lut_uv_from_r_mu_s(IN(Atmosphere) atmosphere, Real r, Real mu_s,
+                                            OUT(Real) u, OUT(Real) v) {
+  Real x_r = (r - atmosphere.bottom_radius) / (atmosphere.top_radius - atmosphere.bottom_radius);
+  u = lut_coord_from_unit(clamp(Real(0.5) + Real(0.5) * mu_s, Real(0.0), Real(1.0)),
+                          kMultipleScatteringLutSize);
+  v = lut_coord_from_unit(clamp(x_r, Real(0.0), Real(1.0)), kMultipleScatteringLutSize);
+}
+
+void multiple_scattering_lut_r_mu_s_from_uv(IN(Atmosphere) atmosphere, Real u, Real v,
+                                            OUT(Real) r, OUT(Real) mu_s) {
+  Real x_mu_s = clamp(unit_from_lut_coord(u, kMultipleScatteringLutSize), Real(0.0), Real(1.0));
+  Real x_r = clamp(unit_from_lut_coord(v, kMultipleScatteringLutSize), Real(0.0), Real(1.0));
+  mu_s = Real(2.0) * x_mu_s - Real(1.0);
+  r = atmosphere.bottom_radius + x_r * (atmosphere.top_radius - atmosphere.bottom_radius);
+}
+
+// --- Sky-view LUT (Hillaire 2020, sec. 5.3, extended to the full azimuth) ----
+// The view zenith angle of the true horizon seen from r is pi - beta with
+// cos(beta) = sqrt(r^2 - R^2) / r. The upper half of the texture holds the
+// sky, the lower half the ground, each with a square law that packs texels
+// at the horizon (v = 1/2), where the sky changes fastest. Azimuth phi is
+// measured from the sun's azimuth over the full circle (-pi, pi], with a
+// square law that packs texels toward the sun for the Mie peak; the
+// texture wraps in u, so that no seam shows behind the viewer and a second
+// light can use the same table.
+Real sky_view_horizon_zenith(IN(Atmosphere) atmosphere, Real r) {
+  Real cos_beta = safe_sqrt(r * r - atmosphere.bottom_radius * atmosphere.bottom_radius) / r;
+  return kPi - acos(clamp(cos_beta, Real(0.0), Real(1.0)));
+}
+
+void sky_view_lut_uv_from_view(IN(Atmosphere) atmosphere, Real r, Real mu, Real phi, OUT(Real) u,
+                               OUT(Real) v) {
+  Real theta_h = sky_view_horizon_zenith(atmosphere, r);
+  Real theta = acos(clamp_cosine(mu));
+  if (theta < theta_h) {
+    v = Real(0.5) - Real(0.5) * safe_sqrt(Real(1.0) - theta / theta_h);
+  } else {
+    Real beta = kPi - theta_h;
+    v = Real(0.5) + Real(0.5) * safe_sqrt((theta - theta_h) / max(beta, Real(1e-6)));
+  }
+  Real s = sign(phi) * safe_sqrt(abs(phi) / kPi);
+  u = Real(0.5) + Real(0.5) * s;
+}
+
+void sky_view_lut_view_from_uv(IN(Atmosphere) atmosphere, Real r, Real u, Real v, OUT(Real) mu,
+                               OUT(Real) phi) {
+  Real theta_h = sky_view_horizon_zenith(atmosphere, r);
+  Real theta;
+  if (v < Real(0.5)) {
+    Real a = Real(1.0) - Real(2.0) * v;
+    theta = theta_h * (Real(1.0) - a * a);
+  } else {
+    Real a = Real(2.0) * v - Real(1.0);
+    theta = theta_h + (kPi - theta_h) * a * a;
+  }
+  mu = cos(theta);
+  Real s = Real(2.0) * u - Real(1.0);
+  phi = kPi * s * abs(s);
+}
+
+// --- Aerial-perspective froxels (Hillaire 2020, sec. 5.4) ---------------------
+// Slice k's centre lies at distance range * ((k + 1/2) / N)^2 along the
+// pixel's ray: slices are thin near the camera, where the eye sees detail.
+Real aerial_slice_distance(Real range, Real w) { return range * w * w; }
+Real aerial_slice_coord(Real range, Real t) { return sqrt(max(t, Real(0.0)) / range); }
+
+// --- Scattering along a ray ---------------------------------------------------
+// (1 - exp(-x)) / x, stable at x -> 0 where float loses 1 - exp(-x).
+Real one_minus_exp_over_x(Real x) {
+  return x < Real(1e-4) ? Real(1.0) - Real(0.5) * x : (Real(1.0) - exp(-x)) / x;
+}
+
+Real3 one_minus_exp_over_x3(IN(Real3) x) {
+  return Real3(one_minus_exp_over_x(x.x), one_minus_exp_over_x(x.y), one_minus_exp_over_x(x.z));
+}
+
+// Sun light arriving at radius r: transmittance to the top, or nothing when
+// the planet stands between the point and the sun (its shadow, sec. 5.2).
+Real3 sun_visibility(IN(Atmosphere) atmosphere, Real r, Real mu_s) {
+  return ray_intersects_ground(atmosphere, r, mu_s) ? Real3(0.0)
+                                                    : transmittance_lookup(atmosphere, r, mu_s);
+}
+
+// One segment [t0, t1] of a ray o + t d, sampled at its middle. The source
+// S is taken constant over the segment and the extinction integrated
+// exactly: int_0^ds S exp(-sigma t) dt = S ds (1 - exp(-sigma ds)) / (sigma ds)
+// (Hillaire 2015, "Physically Based and Unified Volumetric Rendering",
+// energy-conserving integration). In the multiple-scattering pass
+// (`isotropic_pass`) the sun is scattered with the isotropic phase and no
+// higher orders are added; f_ms integrates the scattering alone (eq. 8).
+// Luminance is per unit solar irradiance.
+void accumulate_segment(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, Real t0, Real t1,
+                        IN(Real3) sun_dir, Real phase_r, Real phase_m, bool isotropic_pass,
+                        INOUT(Real3) luminance, INOUT(Real3) throughput, INOUT(Real3) f_ms) {
+  Real ds = t1 - t0;
+  Real3 p = o + (Real(0.5) * (t0 + t1)) * d;
+  Real r = length(p);
+  Real altitude = r - atmosphere.bottom_radius;
+  Real3 sigma_r =
+      atmosphere.rayleigh_scattering * profile_density(atmosphere.rayleigh_density, altitude);
+  Real3 sigma_m = atmosphere.mie_scattering * profile_density(atmosphere.mie_density, altitude);
+  Real3 sigma_s = sigma_r + sigma_m;
+  Real3 extinction = extinction_at(atmosphere, altitude);
+  Real mu_s = clamp_cosine(dot(p, sun_dir) / r);
+  Real3 sun = sun_visibility(atmosphere, r, mu_s);
+  Real3 source;
+  if (isotropic_pass) {
+    source = sun * sigma_s * isotropic_phase();
+  } else {
+    // Eq. 11: single scattering with the true phase functions plus the
+    // isotropic multiple scattering of all higher orders.
+    source = sun * (sigma_r * phase_r + sigma_m * phase_m) +
+             sigma_s * multiple_scattering_lookup(atmosphere, r, mu_s);
+  }
+  Real3 weight = throughput * ds * one_minus_exp_over_x3(extinction * ds);
+  luminance += weight * source;
+  f_ms += weight * sigma_s;
+  throughput *= exp(-extinction * ds);
+}
+
+// Lambertian ground at the end of a ray, lit by the sun through the
+// atmosphere (the sky's own light on the ground is left out, as in the
+// reference implementation of Hillaire 2020).
+Real3 ground_radiance(IN(Atmosphere) atmosphere, IN(Real3) p, IN(Real3) sun_dir) {
+  Real r = length(p);
+  Real mu_s = clamp_cosine(dot(p, sun_dir) / r);
+  Real3 sun = mu_s > Real(0.0) ? transmittance_lookup(atmosphere, atmosphere.bottom_radius, mu_s)
+                               : Real3(0.0);
+  return atmosphere.ground_albedo / kPi * sun * max(mu_s, Real(0.0));
+}
+
+// Scattered luminance (per unit solar irradiance), transmittance and f_ms
+// along o + t d for t in [t_start, t_end], with `steps` segments. Segments
+// crowd (square law) toward the point of the range closest to the planet's
+// centre, where the air is densest: at the camera for a ray up from the
+// ground, at the tangent point of a limb ray seen from space, at the ground
+// for a ray down. `ends_at_ground` adds the lit ground behind the ray.
+void integrate_scattering(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, Real t_start,
+                          Real t_end, IN(Real3) sun_dir, int steps, bool isotropic_pass,
+                          bool ends_at_ground, OUT(Real3) luminance, OUT(Real3) transmittance,
+                          OUT(Real3) f_ms) {
+  luminance = Real3(0.0);
+  transmittance = Real3(1.0);
+  f_ms = Real3(0.0);
+  Real nu = dot(d, sun_dir);
+  Real phase_r = rayleigh_phase(nu);
+  Real phase_m = cornette_shanks_phase(atmosphere.mie_g, nu);
+  Real t_closest = clamp(-dot(o, d), t_start, t_end);
+  Real before = t_closest - t_start;
+  Real after = t_end - t_closest;
+  Real total = before + after;
+  int steps_before =
+      total > Real(0.0) ? int(floor(Real(steps) * before / total + Real(0.5))) : 0;
+  int steps_after = steps - steps_before;
+  for (int i = 0; i < steps; ++i) {
+    Real t0, t1;
+    if (i < steps_before) {
+      Real a0 = Real(1.0) - Real(i) / Real(steps_before);
+      Real a1 = Real(1.0) - Real(i + 1) / Real(steps_before);
+      t0 = t_closest - before * a0 * a0;
+      t1 = t_closest - before * a1 * a1;
+    } else {
+      Real b0 = Real(i - steps_before) / Real(steps_after);
+      Real b1 = Real(i + 1 - steps_before) / Real(steps_after);
+      t0 = t_closest + after * b0 * b0;
+      t1 = t_closest + after * b1 * b1;
+    }
+    accumulate_segment(atmosphere, o, d, t0, t1, sun_dir, phase_r, phase_m, isotropic_pass,
+                       luminance, transmittance, f_ms);
+  }
+  if (ends_at_ground) {
+    luminance += transmittance * ground_radiance(atmosphere, o + t_end * d, sun_dir);
+  }
+}
+
+// The ray o + t d (o inside the top sphere) up to the top boundary or the
+// ground, whichever comes first.
+void ray_extent_inside(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, OUT(Real) t_end,
+                       OUT(bool) hits_ground) {
+  Real t_near, t_far;
+  ray_sphere(o, d, atmosphere.top_radius, t_near, t_far);
+  t_end = max(t_far, Real(0.0));
+  // Whether the ray goes down into the ground is decided from (r, mu), not
+  // from the sign of a rounded intersection distance: from the ground
+  // itself, a ray just above the horizon would otherwise end where it starts.
+  Real r = length(o);
+  Real mu = dot(o, d) / r;
+  hits_ground = ray_intersects_ground(atmosphere, r, mu);
+  if (hits_ground) t_end = min(t_end, distance_to_bottom_boundary(atmosphere, r, mu));
+}
+
+// --- Multiple-scattering LUT texel (Hillaire 2020, sec. 5.5, eqs. 5-10) ------
+// At radius r with the sun at zenith cosine mu_s: the second-order
+// luminance L_2 and the transfer f_ms, each averaged over the sphere of
+// directions (the isotropic phase times the 4 pi solid angle), then
+// Psi_ms = L_2 / (1 - f_ms), the sum of the geometric series of all orders
+// (eq. 9). Per unit solar irradiance. The ground reflects with its albedo.
+Real3 multiple_scattering_texel(IN(Atmosphere) atmosphere, Real r, Real mu_s) {
+  Real3 o = Real3(0.0, 0.0, r);
+  Real3 sun_dir = Real3(safe_sqrt(Real(1.0) - mu_s * mu_s), Real(0.0), mu_s);
+  Real3 l_2 = Real3(0.0);
+  Real3 f_ms = Real3(0.0);
+  const int n = kMultipleScatteringDirectionsSqrt;
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      // Stratified uniform directions: phi uniform, cos(theta) uniform.
+      Real phi = Real(2.0) * kPi * (Real(i) + Real(0.5)) / Real(n);
+      Real cos_theta = Real(1.0) - Real(2.0) * (Real(j) + Real(0.5)) / Real(n);
+      Real sin_theta = safe_sqrt(Real(1.0) - cos_theta * cos_theta);
+      Real3 d = Real3(sin_theta * cos(phi), sin_theta * sin(phi), cos_theta);
+      Real t_end;
+      bool hits_ground;
+      ray_extent_inside(atmosphere, o, d, t_end, hits_ground);
+      Real3 luminance, transmittance, f;
+      integrate_scattering(atmosphere, o, d, Real(0.0), t_end, sun_dir, kMultipleScatteringSteps,
+                           true, hits_ground, luminance, transmittance, f);
+      l_2 += luminance;
+      f_ms += f;
+    }
+  }
+  Real inv_count = Real(1.0) / Real(n * n);
+  l_2 *= inv_count;
+  f_ms *= inv_count;
+  return l_2 / (Real3(1.0) - f_ms);
+}
+
+// --- The sun disk ---------------------------------------------------------------
+// Limb darkening by the power law I(mu) = I(1) mu^alpha of Hestroffer and
+// Magnan 1998, alpha = 0.397, 0.503, 0.652 at 680, 550, 440 nm, with mu the
+// cosine on the solar surface (sqrt(1 - x^2), x the fraction of the disk's
+// radius). Normalised so that the disk's irradiance is the body's solar
+// irradiance: int mu^alpha over the disk = (solid angle) 2 / (alpha + 2).
+Real3 sun_disk_radiance(IN(Atmosphere) atmosphere, Real cos_angle) {
+  Real cos_alpha = cos(atmosphere.sun_angular_radius);
+  if (cos_angle <= cos_alpha) return Real3(0.0);
+  Real solid_angle = Real(2.0) * kPi * (Real(1.0) - cos_alpha);
+  Real angle = acos(clamp_cosine(cos_angle));
+  Real x = min(angle / atmosphere.sun_angular_radius, Real(1.0));
+  Real mu = safe_sqrt(Real(1.0) - x * x);
+  Real3 alpha = Real3(0.397, 0.503, 0.652);
+  Real3 darkening = Real3(pow(mu, alpha.x), pow(mu, alpha.y), pow(mu, alpha.z));
+  return atmosphere.solar_irradiance / solid_angle * (alpha + Real3(2.0)) * Real(0.5) * darkening;
+}
