@@ -70,6 +70,8 @@ class FlySession {
     }
     renderer_ = std::make_unique<FrameRenderer>(std::max(1, int(args.width * args.render_scale)),
                                                 std::max(1, int(args.height * args.render_scale)));
+    // A window never waits for tiles: it draws parents while children load.
+    renderer_->set_terrain_wait(0.0);
     if (!args.flight_file.empty()) {
       FlightScript script = load_flight_script(args.flight_file);
       technique_ = script.technique;
@@ -138,6 +140,10 @@ class FlySession {
       atmosphere = parse_atmosphere(JsonObject(body.atmosphere, body.file.string(), "atmosphere"));
       technique = make_technique(technique_);
     }
+    // A new body builds a new terrain, which takes the budget now set.
+    TerrainOptions terrain;
+    terrain.pixel_budget = double(lod_pixels_);
+    renderer_->set_terrain_options(terrain);
     renderer_->set_body(body, atmosphere, std::move(technique));
   }
 
@@ -315,7 +321,10 @@ class FlySession {
     if (ImGui::SliderFloat("exposure (log10)", &log_exposure, -3.0f, 3.0f, "%.2f")) {
       exposure_ = std::pow(10.0, double(log_exposure));
     }
-    ImGui::SliderFloat("terrain LOD pixel budget", &lod_pixels_, 0.25f, 8.0f, "%.2f px");
+    if (ImGui::SliderFloat("terrain LOD pixel budget", &lod_pixels_, 0.25f, 8.0f, "%.2f px") &&
+        renderer_->terrain()) {
+      renderer_->terrain()->set_pixel_budget(double(lod_pixels_));
+    }
     ImGui::TextUnformatted("WASD move, R/F up/down, arrows or drag turn, Q/E roll, Shift x10");
     ImGui::TextUnformatted("F12 screenshot, F9 record/stop, Esc quit");
     ImGui::End();

@@ -44,8 +44,10 @@ class FrameRenderer {
 
   // Terrain settings, taken by the next set_body.
   void set_terrain_options(const TerrainOptions& options) { terrain_options_ = options; }
-  // Capture: wait up to this long for every terrain tile a frame needs
-  // (0: draw what is resident and never wait, as a window does).
+  // Wait up to this long for every terrain tile a frame needs, so that a
+  // frame is complete and the same on every run (the default: capture,
+  // tests, benchmarks); 0 draws what is resident and never waits, as a
+  // window must.
   void set_terrain_wait(double seconds) { terrain_wait_s_ = seconds; }
   const TerrainStats& terrain_stats() const { return terrain_stats_; }
   TerrainRenderer* terrain() { return terrain_.get(); }
@@ -70,7 +72,7 @@ class FrameRenderer {
   TerrainOptions terrain_options_;
   std::unique_ptr<TerrainRenderer> terrain_;
   TerrainStats terrain_stats_;
-  double terrain_wait_s_ = 0;
+  double terrain_wait_s_ = 300.0;
 
   Body body_;
   std::optional<AtmosphereModel> atmosphere_;

@@ -125,7 +125,24 @@ Scene find_scene(const std::string& name) {
   throw InputError(fmt::format("'{}' is not a canonical scene ({})", name, known));
 }
 
-Body scene_body(const Scene& scene) { return load_body(find_body_file(scene.body)); }
+Body scene_body(const Scene& scene) {
+  Body body = load_body(find_body_file(scene.body));
+  // The ground truth's ground is the smooth bottom sphere, Lambertian with
+  // the model's albedo. So that a technique is judged on its sky and not on
+  // the terrain, the frame draws the same ground: the body's relief and
+  // palette give way to a smooth surface of that one grey (terrain/'s
+  // schema: no noise layers, every palette colour the same).
+  if (body.has_atmosphere() && body.atmosphere.contains("ground_albedo")) {
+    double a = body.atmosphere["ground_albedo"].get<double>();
+    nlohmann::json grey = {a, a, a};
+    body.terrain = {
+        {"max_level", 12},
+        {"height", {{"type", "procedural"}, {"layers", nlohmann::json::array()}}},
+        {"albedo", {{"low", grey}, {"high", grey}, {"steep", grey}, {"snow", grey}, {"ocean", grey}}},
+    };
+  }
+  return body;
+}
 
 AtmosphereModel scene_atmosphere(const Scene& scene, const Body& body) {
   if (!body.has_atmosphere()) {

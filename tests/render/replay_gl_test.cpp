@@ -25,9 +25,6 @@ TEST(ReplayGLTest, RecordedFlightReplaysByteIdenticalFrames) {
   const int w = 64, h = 32;
   FrameRenderer live(w, h);
   live.set_body(earth, model(), make_technique("raymarch"));
-  // Both sides wait for every terrain tile their frames need, as capture
-  // does; a window that draws what is resident is not reproducible.
-  live.set_terrain_wait(120.0);
 
   // Fly a scripted input at the fixed step with the clock running fast.
   SimClock clock(parse_utc("2026-06-21T17:40:00Z", "test"));
@@ -64,7 +61,6 @@ TEST(ReplayGLTest, RecordedFlightReplaysByteIdenticalFrames) {
 
   FrameRenderer replay(w, h);
   replay.set_body(script.body, model(), make_technique(script.technique));
-  replay.set_terrain_wait(120.0);
   FlightPath path(script);
   ASSERT_EQ(script.frame_count(), int(flown.size()));
   for (int i = 0; i < script.frame_count(); ++i) {
