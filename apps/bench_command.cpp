@@ -12,15 +12,13 @@ namespace planet::apps {
 
 void add_bench_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
-      "bench", "Run the speed benchmarks (Google Benchmark; pass its flags after --, "
-               "e.g. planet bench -- --benchmark_filter=Sky)");
+      "bench", "Run the speed benchmarks (Google Benchmark; its flags follow, "
+               "e.g. planet bench --benchmark_filter=Hillaire)");
   // Everything after `bench` goes to Google Benchmark as it is.
   cmd->prefix_command();
   cmd->callback([cmd] {
     std::vector<std::string> args = {"planet bench"};
-    for (const auto& e : cmd->remaining()) {
-      if (e != "--") args.push_back(e);
-    }
+    for (const auto& e : cmd->remaining()) args.push_back(e);
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
     int argc = int(argv.size());

@@ -42,6 +42,29 @@ TEST(Mars24Test, SunDirectionPointsAtTheSubsolarPoint) {
   EXPECT_LT(origin.elevation, glm::radians(-60.0));
 }
 
+// At the solstices the subsolar latitude is the planetographic obliquity
+// term of D-1: +-25.441 deg, as an independent implementation of the same
+// algorithm (C. Lee's marstime, its solar_declination tests) gives it.
+TEST(Mars24Test, SubsolarLatitudeAtTheSolstices) {
+  for (double target_deg : {90.0, 270.0}) {
+    // Bisect for the instant Ls crosses the target within one Martian year
+    // from 2020, where Ls grows monotonically between the bounds found by
+    // stepping a day at a time.
+    UtcSeconds t = parse_utc("2020-01-01T00:00:00Z", "test");
+    auto offset = [&](UtcSeconds u) {
+      return std::remainder(mars_sun(u).ls - glm::radians(target_deg), 2 * glm::pi<double>());
+    };
+    while (!(offset(t) < 0.0 && offset(t + 86400.0) >= 0.0)) t += 86400.0;
+    UtcSeconds lo = t, hi = t + 86400.0;
+    for (int i = 0; i < 50; ++i) {
+      UtcSeconds mid = 0.5 * (lo + hi);
+      (offset(mid) < 0.0 ? lo : hi) = mid;
+    }
+    double expected = target_deg == 90.0 ? 25.441 : -25.441;
+    EXPECT_NEAR(glm::degrees(mars_sun(lo).subsolar_lat), expected, 1e-3) << target_deg;
+  }
+}
+
 TEST(Mars24Test, SolarLongitudeAdvancesOneMartianYearIn687Days) {
   UtcSeconds t0 = parse_utc("2020-01-01T00:00:00Z", "test");
   double ls0 = mars_sun(t0).ls;
