@@ -8,6 +8,8 @@
 #include "sim/data_paths.h"
 #include "sim/geodesy.h"
 
+#include "tests/render/view_from_place.h"
+
 #include <gtest/gtest.h>
 #include <glm/gtc/constants.hpp>
 
@@ -49,16 +51,9 @@ class HillaireGLTest : public ::testing::Test {
   std::vector<float> render(const Geodetic& place, double heading_deg, double pitch_deg,
                             double sun_elevation_deg, double sun_azimuth_deg,
                             double fov_deg = 90.0) {
-    Geodesy geodesy(body_.shape);
-    Camera camera;
-    camera.pos_body = geodesy.body_from_geodetic(place);
-    camera.body_from_camera =
-        glm::quat_cast(geodesy.body_from_enu(place)) *
-        enu_from_camera(glm::radians(heading_deg), glm::radians(pitch_deg), 0.0);
-    camera.vertical_fov = glm::radians(fov_deg);
-    double e = glm::radians(sun_elevation_deg), a = glm::radians(sun_azimuth_deg);
-    glm::dvec3 sun_enu(std::cos(e) * std::sin(a), std::cos(e) * std::cos(a), std::sin(e));
-    renderer_->render(camera, geodesy.body_from_enu(place) * sun_enu, 10.0);
+    auto view = view_from_place(body_.shape, place, heading_deg, pitch_deg, fov_deg,
+                                sun_elevation_deg, sun_azimuth_deg);
+    renderer_->render(view.camera, view.sun_dir_body, 10.0);
     return renderer_->read_hdr();
   }
 
