@@ -8,6 +8,7 @@
 #include <cmath>
 #include <fstream>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <tuple>
@@ -105,6 +106,7 @@ ObjCage read_obj_cage(const std::filesystem::path& file) {
   // hole (the surface would not enclose the centre), an edge used three or
   // more times joins sheets that no limit surface can follow.
   std::map<std::pair<int, int>, std::pair<int, int>> edges;  // -> (uses, first face line)
+  std::set<std::pair<int, int>> directed;
   size_t k = 0;
   for (size_t f = 0; f < cage.face_sizes.size(); ++f) {
     int n = cage.face_sizes[f];
@@ -120,6 +122,14 @@ ObjCage read_obj_cage(const std::filesystem::path& file) {
             "{}: non-manifold cage: the edge between vertices {} and {} is shared by more than "
             "two faces",
             where(file, face_lines[f]), it->first.first + 1, it->first.second + 1));
+      }
+      // Each face of a consistently oriented closed cage runs along a
+      // shared edge the other way from its neighbour; OpenSubdiv needs that
+      // to find a vertex's ring of faces.
+      if (!directed.insert({a, b}).second) {
+        throw InputError(fmt::format(
+            "{}: faces are not consistently oriented: two faces run from vertex {} to {}",
+            where(file, face_lines[f]), a + 1, b + 1));
       }
     }
     k += size_t(n);

@@ -21,8 +21,9 @@ struct ObjCage {
 
 // Throws InputError naming the file (and line, where one is at fault) when
 // the file cannot be read, holds no face, has a vertex that is not finite
-// or an index out of range, or is not a closed manifold: every edge must
-// be shared by exactly two faces.
+// or an index out of range, or is not a closed, consistently oriented
+// manifold: every edge must be shared by exactly two faces, which run
+// along it in opposite directions.
 ObjCage read_obj_cage(const std::filesystem::path& file);
 
 }  // namespace planet

@@ -123,10 +123,12 @@ TEST(ObjCageTest, BadCagesNameTheFileAndLine) {
   expect_error("range.obj", cube_obj({"1 3 4 2", "5 6 8 9"}), "out of range", 10);
   expect_error("negative.obj", cube_obj({"1 3 4 -9"}), "out of range", 9);
   expect_error("syntax.obj", cube_obj({"1 3 x 2"}), "not a vertex index", 9);
-  // Four faces on one edge: two cubes sharing the edge 1-2 and nothing else
-  // would be complex to write, so a fan of three triangles will do.
+  // Three triangles on the edge from vertex 1 to vertex 2.
   expect_error("fan.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 0 -1 0\n"
                "f 1 2 3\nf 2 1 4\nf 1 2 5\n", "more than two faces", 8);
+  std::vector<std::string> flipped = kCubeFaces;
+  flipped[5] = "2 6 8 4";
+  expect_error("flipped.obj", cube_obj(flipped), "not consistently oriented");
   std::vector<std::string> open = kCubeFaces;
   open.pop_back();
   expect_error("open.obj", cube_obj(open), "not closed");
