@@ -1,6 +1,8 @@
 #include "terrain/terrain_config.h"
 
+#include "terrain/cage_height.h"
 #include "terrain/height_map.h"
+#include "terrain/obj_cage.h"
 #include "terrain/procedural_height.h"
 
 #include "sim/data_paths.h"
@@ -57,7 +59,19 @@ std::shared_ptr<const HeightSource> parse_heights(JsonObject& o, const Body& bod
     map->set_body_radius(mean_radius);
     return map;
   }
-  o.fail("type", fmt::format("'{}' is not a height source (procedural, height_map)", type));
+  if (type == "cage") {
+    std::filesystem::path file = o.string("file");
+    if (file.is_relative()) file = project_root() / file;
+    std::vector<NoiseLayer> layers;
+    if (o.has("layers")) {
+      for (JsonObject& l : o.objects("layers")) layers.push_back(parse_layer(l));
+    }
+    o.finish();
+    return std::make_shared<CageHeight>(read_obj_cage(file), file.string(), mean_radius,
+                                        std::move(layers));
+  }
+  o.fail("type",
+         fmt::format("'{}' is not a height source (procedural, height_map, cage)", type));
 }
 
 }  // namespace
