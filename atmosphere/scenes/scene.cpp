@@ -96,21 +96,22 @@ std::vector<Scene> canonical_scenes() {
   Placement rock_space{0.0, 0.0, 70e3, 0.0, -90.0, 60.0, 30.0, 90.0};
   scenes.push_back(make_scene("asteroid_space", "the asteroid and its atmosphere from 70 km",
                               "asteroid", rock_space, 10.0));
-  Scene dense10 = scenes[0];
-  dense10.name = "earth_noon_dense10";
-  dense10.description = "earth_noon with 10x the scattering";
+  // Variants of Earth noon that stress the techniques.
+  auto noon_variant = [&](const char* name, const char* description) {
+    Scene v = scenes[0];
+    v.name = name;
+    v.description = description;
+    return v;
+  };
+  Scene dense10 = noon_variant("earth_noon_dense10", "earth_noon with 10x the scattering");
   dense10.scattering_scale = 10.0;
   dense10.exposure = 5.0;
   scenes.push_back(dense10);
-  Scene dense50 = scenes[0];
-  dense50.name = "earth_noon_dense50";
-  dense50.description = "earth_noon with 50x the scattering";
+  Scene dense50 = noon_variant("earth_noon_dense50", "earth_noon with 50x the scattering");
   dense50.scattering_scale = 50.0;
   dense50.exposure = 5.0;
   scenes.push_back(dense50);
-  Scene forward = scenes[0];
-  forward.name = "earth_noon_g095";
-  forward.description = "earth_noon with Mie asymmetry g = 0.95";
+  Scene forward = noon_variant("earth_noon_g095", "earth_noon with Mie asymmetry g = 0.95");
   forward.mie_g = 0.95;
   scenes.push_back(forward);
   return scenes;
