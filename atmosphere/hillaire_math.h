@@ -23,7 +23,53 @@ Real3 transmittance_lookup(IN(Atmosphere) atmosphere, Real r, Real mu) {
 }
 Real3 multiple_scattering_lookup(IN(Atmosphere), Real, Real) { return Real3(0.0); }
 
+// The previous order of scattering, for the CPU evaluation of the next one:
+// RGBA float tables as the GPU holds them (J_n: n x n texels, E_n: one
+// row of n), sampled as GL samples a texture (bilinear between texel
+// centres, clamped to the edge). A test points these at the tables it read
+// back; left empty, the lookups give zero.
+struct OrderTables {
+  const float* order = nullptr;
+  const float* ground = nullptr;
+  int size = 0;
+};
+OrderTables cpu_order_tables;
+
+Real3 sample_table(const float* table, int width, int height, Real u, Real v) {
+  Real x = glm::clamp(u * width - 0.5, 0.0, double(width - 1));
+  Real y = glm::clamp(v * height - 0.5, 0.0, double(height - 1));
+  int x0 = int(x), y0 = int(y);
+  int x1 = glm::min(x0 + 1, width - 1), y1 = glm::min(y0 + 1, height - 1);
+  Real fx = x - x0, fy = y - y0;
+  auto at = [&](int i, int j) {
+    const float* t = table + (size_t(j) * size_t(width) + size_t(i)) * 4;
+    return Real3(t[0], t[1], t[2]);
+  };
+  return glm::mix(glm::mix(at(x0, y0), at(x1, y0), fx), glm::mix(at(x0, y1), at(x1, y1), fx), fy);
+}
+
+Real3 multiple_scattering_unit_lookup(const float* table, int width, int height, Real u,
+                                      Real v) {
+  return table ? sample_table(table, width, height, u, v) : Real3(0.0);
+}
+
+Real3 scattering_order_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s);
+Real3 ground_order_lookup(IN(Atmosphere) atmosphere, Real mu_s);
+
 #include "atmosphere/shaders/hillaire_functions.glsl"
+
+Real3 scattering_order_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s) {
+  Real u, v;
+  multiple_scattering_lut_uv_from_r_mu_s(atmosphere, r, mu_s, u, v);
+  const OrderTables& t = cpu_order_tables;
+  return multiple_scattering_unit_lookup(t.order, t.size, t.size, u, v);
+}
+
+Real3 ground_order_lookup(IN(Atmosphere), Real mu_s) {
+  const OrderTables& t = cpu_order_tables;
+  return multiple_scattering_unit_lookup(t.ground, t.size, 1,
+                                         ground_irradiance_lut_u_from_mu_s(mu_s), 0.5);
+}
 #pragma GCC diagnostic pop
 }  // namespace
 

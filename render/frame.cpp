@@ -99,6 +99,7 @@ void FrameRenderer::draw_surfaces(const Camera& camera, const glm::dvec3& sun_di
   if (atmosphere_) {
     lighting.atmo_scale = atmosphere_scale(body_.shape, atmosphere_->bottom_radius);
     lighting.solar_irradiance = glm::vec3(atmosphere_->solar_irradiance);
+    if (technique_) lighting.sky_irradiance = technique_->ground_irradiance();
   }
   // Bound even for an airless body (then all zero): the block is declared.
   glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, atmosphere_block_.id());
@@ -110,6 +111,8 @@ FrameStats FrameRenderer::render(const Camera& camera, const glm::dvec3& sun_dir
                                  double exposure) {
   // Before the surface timer starts: waiting is not drawing.
   if (terrain_wait_s_ > 0) terrain_->wait_until_complete(camera, width_, height_, terrain_wait_s_);
+  // The technique's model-wide tables first: the ground's sky light is one.
+  if (atmosphere_ && technique_) technique_->prepare(timer_);
   timer_.begin("surface");
   draw_surfaces(camera, sun_dir_body);
   timer_.end();

@@ -45,8 +45,18 @@ class AtmosphereTechnique {
   virtual std::string name() const = 0;
   // Takes new parameters; cheap when nothing changed.
   virtual void update(const AtmosphereModel& model) = 0;
+  // The tables that depend on the model alone, for this frame; a frame
+  // calls it before drawing its surfaces, which may light themselves with
+  // ground_irradiance(). render() prepares them itself when not called.
+  virtual void prepare(GpuTimer& timer) { (void)timer; }
   // Sky, sun disk and aerial perspective over the surfaces into the target.
   virtual void render(const SkyFrame& frame, GpuTimer& timer) = 0;
+  // The sky's irradiance on horizontal ground per unit solar irradiance,
+  // after prepare(): a one-row RGBA texture over the sun's zenith cosine
+  // whose texel i of n holds mu_s = mu_s_from_sky_irradiance_u(i / (n - 1))
+  // (atmosphere_functions.glsl). 0 when the technique does not compute it;
+  // the terrain then estimates its own.
+  virtual GLuint ground_irradiance() const { return 0; }
 };
 
 // Names accepted on the command line and in flight scripts.

@@ -280,3 +280,17 @@ Real2 transmittance_r_mu_from_uv(IN(Atmosphere) atmosphere, Real2 uv, Real2 size
   Real mu = d == Real(0.0) ? Real(1.0) : (H * H - rho * rho - d * d) / (Real(2.0) * r * d);
   return Real2(r, clamp_cosine(mu));
 }
+
+// The sun's zenith cosine mu_s -> [0, 1] as (1 + sign(mu_s) sqrt(|mu_s|)) / 2,
+// and back: packs samples around the terminator (mu_s = 0), where the light
+// at a point changes fastest. Hillaire's multiple-scattering LUT and the
+// ground's sky-irradiance table use it.
+Real sky_irradiance_u_from_mu_s(Real mu_s) {
+  Real m = clamp(mu_s, Real(-1.0), Real(1.0));
+  return Real(0.5) + Real(0.5) * sign(m) * sqrt(abs(m));
+}
+
+Real mu_s_from_sky_irradiance_u(Real x) {
+  Real s = Real(2.0) * x - Real(1.0);
+  return s * abs(s);
+}

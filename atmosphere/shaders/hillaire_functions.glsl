@@ -11,12 +11,19 @@
 //       transmittance from radius r to the top along zenith cosine mu
 //   Real3 multiple_scattering_lookup(IN(Atmosphere), Real r, Real mu_s)
 //       Psi_ms per unit solar irradiance (Hillaire 2020, eq. 10)
-// On the GPU these sample the LUTs; on the CPU they integrate directly.
+//   Real3 scattering_order_lookup(IN(Atmosphere), Real r, Real mu_s)
+//       J_n, the mean radiance of the previous order (see below)
+//   Real3 ground_order_lookup(IN(Atmosphere), Real mu_s)
+//       E_n, that order's irradiance on the ground
+// On the GPU these sample the LUTs; on the CPU they integrate directly or
+// read tables.
 
 const int kTransmittanceLutWidth = 256;
 const int kTransmittanceLutHeight = 64;
 const int kTransmittanceSteps = 40;
 const int kMultipleScatteringLutSize = 32;
+// Orders of scattering summed explicitly before the geometric tail.
+const int kScatteringOrders = 3;
 // 8 x 8 stratified directions over the sphere (Hillaire 2020, sec. 5.5: 64).
 const int kMultipleScatteringDirectionsSqrt = 8;
 const int kMultipleScatteringSteps = 20;
@@ -58,13 +65,15 @@ void transmittance_lut_r_mu_from_uv(IN(Atmosphere) atmosphere, Real u, Real v, O
 }
 
 // --- Multiple-scattering LUT (Hillaire 2020, sec. 5.5) ------------------------
-// Psi_ms depends on altitude and sun zenith only: x = (mu_s + 1) / 2 and
-// y = altitude / thickness, both texel-centred.
+// Psi_ms depends on altitude and sun zenith only: y = altitude / thickness
+// and x = sky_irradiance_u_from_mu_s(mu_s), both texel-centred. The paper
+// maps mu_s linearly; the square root packs texels around the terminator,
+// where the light at a point changes fastest: with 32 linear texels the
+// twilight sky's higher orders moved by half between 32 and 128 texels.
 void multiple_scattering_lut_uv_from_r_mu_s(IN(Atmosphere) atmosphere, Real r, Real mu_s,
                                             OUT(Real) u, OUT(Real) v) {
   Real x_r = (r - atmosphere.bottom_radius) / (atmosphere.top_radius - atmosphere.bottom_radius);
-  u = lut_coord_from_unit(clamp(Real(0.5) + Real(0.5) * mu_s, Real(0.0), Real(1.0)),
-                          kMultipleScatteringLutSize);
+  u = lut_coord_from_unit(sky_irradiance_u_from_mu_s(mu_s), kMultipleScatteringLutSize);
   v = lut_coord_from_unit(clamp(x_r, Real(0.0), Real(1.0)), kMultipleScatteringLutSize);
 }
 
@@ -72,8 +81,13 @@ void multiple_scattering_lut_r_mu_s_from_uv(IN(Atmosphere) atmosphere, Real u, R
                                             OUT(Real) r, OUT(Real) mu_s) {
   Real x_mu_s = clamp(unit_from_lut_coord(u, kMultipleScatteringLutSize), Real(0.0), Real(1.0));
   Real x_r = clamp(unit_from_lut_coord(v, kMultipleScatteringLutSize), Real(0.0), Real(1.0));
-  mu_s = Real(2.0) * x_mu_s - Real(1.0);
+  mu_s = mu_s_from_sky_irradiance_u(x_mu_s);
   r = atmosphere.bottom_radius + x_r * (atmosphere.top_radius - atmosphere.bottom_radius);
+}
+
+// The ground-irradiance table: one row over mu_s, the same mapping.
+Real ground_irradiance_lut_u_from_mu_s(Real mu_s) {
+  return lut_coord_from_unit(sky_irradiance_u_from_mu_s(mu_s), kMultipleScatteringLutSize);
 }
 
 // --- Sky-view LUT (Hillaire 2020, sec. 5.3, extended to the full azimuth) ----
@@ -143,16 +157,27 @@ Real3 sun_visibility(IN(Atmosphere) atmosphere, Real r, Real mu_s) {
                                                     : transmittance_lookup(atmosphere, r, mu_s);
 }
 
+// What lights the air along a ray:
+// - kSourceSky: the sun with the true phase functions, plus every higher
+//   order from the multiple-scattering LUT (Hillaire 2020, eq. 11);
+// - kSourceFirstOrder: the sun with the true phase functions alone;
+// - kSourceIsotropicSun: the sun with the isotropic phase (the paper's
+//   L_2 pass, sec. 5.5);
+// - kSourceNextOrder: the previous order's mean radiance J_n, scattered
+//   isotropically (scattering_order_lookup); the ground reflects E_n.
+const int kSourceSky = 0;
+const int kSourceFirstOrder = 1;
+const int kSourceIsotropicSun = 2;
+const int kSourceNextOrder = 3;
+
 // One segment [t0, t1] of a ray o + t d, sampled at its middle. The source
 // S is taken constant over the segment and the extinction integrated
 // exactly: int_0^ds S exp(-sigma t) dt = S ds (1 - exp(-sigma ds)) / (sigma ds)
 // (Hillaire 2015, "Physically Based and Unified Volumetric Rendering",
-// energy-conserving integration). In the multiple-scattering pass
-// (`isotropic_pass`) the sun is scattered with the isotropic phase and no
-// higher orders are added; f_ms integrates the scattering alone (eq. 8).
-// Luminance is per unit solar irradiance.
+// energy-conserving integration). f_ms integrates the scattering alone
+// (Hillaire 2020, eq. 8). Luminance is per unit solar irradiance.
 void accumulate_segment(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, Real t0, Real t1,
-                        IN(Real3) sun_dir, Real phase_r, Real phase_m, bool isotropic_pass,
+                        IN(Real3) sun_dir, Real phase_r, Real phase_m, int source_kind,
                         INOUT(Real3) luminance, INOUT(Real3) throughput, INOUT(Real3) f_ms) {
   Real ds = t1 - t0;
   Real3 p = o + (Real(0.5) * (t0 + t1)) * d;
@@ -164,15 +189,19 @@ void accumulate_segment(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, Rea
   Real3 sigma_s = sigma_r + sigma_m;
   Real3 extinction = extinction_at(atmosphere, altitude);
   Real mu_s = clamp_cosine(dot(p, sun_dir) / r);
-  Real3 sun = sun_visibility(atmosphere, r, mu_s);
   Real3 source;
-  if (isotropic_pass) {
-    source = sun * sigma_s * isotropic_phase();
+  if (source_kind == kSourceNextOrder) {
+    source = sigma_s * scattering_order_lookup(atmosphere, r, mu_s);
   } else {
-    // Eq. 11: single scattering with the true phase functions plus the
-    // isotropic multiple scattering of all higher orders.
-    source = sun * (sigma_r * phase_r + sigma_m * phase_m) +
-             sigma_s * multiple_scattering_lookup(atmosphere, r, mu_s);
+    Real3 sun = sun_visibility(atmosphere, r, mu_s);
+    if (source_kind == kSourceIsotropicSun) {
+      source = sun * sigma_s * isotropic_phase();
+    } else {
+      source = sun * (sigma_r * phase_r + sigma_m * phase_m);
+      if (source_kind == kSourceSky) {
+        source += sigma_s * multiple_scattering_lookup(atmosphere, r, mu_s);
+      }
+    }
   }
   Real3 weight = throughput * ds * one_minus_exp_over_x3(extinction * ds);
   luminance += weight * source;
@@ -196,9 +225,10 @@ Real3 ground_radiance(IN(Atmosphere) atmosphere, IN(Real3) p, IN(Real3) sun_dir)
 // crowd (square law) toward the point of the range closest to the planet's
 // centre, where the air is densest: at the camera for a ray up from the
 // ground, at the tangent point of a limb ray seen from space, at the ground
-// for a ray down. `ends_at_ground` adds the lit ground behind the ray.
+// for a ray down. `ends_at_ground` adds the lit ground behind the ray: by
+// the sun, or for kSourceNextOrder by the previous order's sky light.
 void integrate_scattering(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, Real t_start,
-                          Real t_end, IN(Real3) sun_dir, int steps, bool isotropic_pass,
+                          Real t_end, IN(Real3) sun_dir, int steps, int source_kind,
                           bool ends_at_ground, OUT(Real3) luminance, OUT(Real3) transmittance,
                           OUT(Real3) f_ms) {
   luminance = Real3(0.0);
@@ -227,11 +257,18 @@ void integrate_scattering(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, R
       t0 = t_closest + after * b0 * b0;
       t1 = t_closest + after * b1 * b1;
     }
-    accumulate_segment(atmosphere, o, d, t0, t1, sun_dir, phase_r, phase_m, isotropic_pass,
+    accumulate_segment(atmosphere, o, d, t0, t1, sun_dir, phase_r, phase_m, source_kind,
                        luminance, transmittance, f_ms);
   }
   if (ends_at_ground) {
-    luminance += transmittance * ground_radiance(atmosphere, o + t_end * d, sun_dir);
+    Real3 p = o + t_end * d;
+    if (source_kind == kSourceNextOrder) {
+      Real mu_s = clamp_cosine(dot(p, sun_dir) / length(p));
+      luminance += transmittance * atmosphere.ground_albedo / kPi *
+                   ground_order_lookup(atmosphere, mu_s);
+    } else {
+      luminance += transmittance * ground_radiance(atmosphere, p, sun_dir);
+    }
   }
 }
 
@@ -252,11 +289,24 @@ void ray_extent_inside(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, OUT(
 }
 
 // --- Multiple-scattering LUT texel (Hillaire 2020, sec. 5.5, eqs. 5-10) ------
-// At radius r with the sun at zenith cosine mu_s: the second-order
-// luminance L_2 and the transfer f_ms, each averaged over the sphere of
-// directions (the isotropic phase times the 4 pi solid angle), then
+// The paper's form, kept for comparison (technique "hillaire2020"). At
+// radius r with the sun at zenith cosine mu_s: the second-order luminance
+// L_2 and the transfer f_ms, each averaged over the sphere of directions
+// (the isotropic phase times the 4 pi solid angle), then
 // Psi_ms = L_2 / (1 - f_ms), the sum of the geometric series of all orders
-// (eq. 9). Per unit solar irradiance. The ground reflects with its albedo.
+// (eq. 9). Per unit solar irradiance. The ground reflects the sun with its
+// albedo.
+//
+// Stratified uniform directions: phi uniform, cos(theta) uniform over the
+// sphere (or, for the ground's hemisphere, over [0, 1]).
+Real3 sphere_direction(int i, int j, int n, bool upper_half) {
+  Real phi = Real(2.0) * kPi * (Real(i) + Real(0.5)) / Real(n);
+  Real cos_theta = upper_half ? Real(1.0) - (Real(j) + Real(0.5)) / Real(n)
+                              : Real(1.0) - Real(2.0) * (Real(j) + Real(0.5)) / Real(n);
+  Real sin_theta = safe_sqrt(Real(1.0) - cos_theta * cos_theta);
+  return Real3(sin_theta * cos(phi), sin_theta * sin(phi), cos_theta);
+}
+
 Real3 multiple_scattering_texel(IN(Atmosphere) atmosphere, Real r, Real mu_s) {
   Real3 o = Real3(0.0, 0.0, r);
   Real3 sun_dir = Real3(safe_sqrt(Real(1.0) - mu_s * mu_s), Real(0.0), mu_s);
@@ -265,17 +315,13 @@ Real3 multiple_scattering_texel(IN(Atmosphere) atmosphere, Real r, Real mu_s) {
   const int n = kMultipleScatteringDirectionsSqrt;
   for (int i = 0; i < n; ++i) {
     for (int j = 0; j < n; ++j) {
-      // Stratified uniform directions: phi uniform, cos(theta) uniform.
-      Real phi = Real(2.0) * kPi * (Real(i) + Real(0.5)) / Real(n);
-      Real cos_theta = Real(1.0) - Real(2.0) * (Real(j) + Real(0.5)) / Real(n);
-      Real sin_theta = safe_sqrt(Real(1.0) - cos_theta * cos_theta);
-      Real3 d = Real3(sin_theta * cos(phi), sin_theta * sin(phi), cos_theta);
+      Real3 d = sphere_direction(i, j, n, false);
       Real t_end;
       bool hits_ground;
       ray_extent_inside(atmosphere, o, d, t_end, hits_ground);
       Real3 luminance, transmittance, f;
       integrate_scattering(atmosphere, o, d, Real(0.0), t_end, sun_dir, kMultipleScatteringSteps,
-                           true, hits_ground, luminance, transmittance, f);
+                           kSourceIsotropicSun, hits_ground, luminance, transmittance, f);
       l_2 += luminance;
       f_ms += f;
     }
@@ -284,6 +330,59 @@ Real3 multiple_scattering_texel(IN(Atmosphere) atmosphere, Real r, Real mu_s) {
   l_2 *= inv_count;
   f_ms *= inv_count;
   return l_2 / (Real3(1.0) - f_ms);
+}
+
+// --- Scattering orders (the default multiple-scattering LUT) ------------------
+// The paper's 1 / (1 - f_ms) assumes that every order sees the same
+// neighbourhood as the second, and its L_2 leaves out the sky's light
+// reflected by the ground. Against the path tracer (Earth, sun 60 deg up)
+// the orders above the second come out 40 % low and the blue sky 7 %.
+// Here the orders are summed one by one, each from the last, as
+// Bruneton and Neyret do, but kept to Hillaire's 2D table by his one
+// assumption: the light of an order at a point is isotropic, so that its
+// mean radiance J_n(r, mu_s) describes it.
+//   J_1: the sun scattered once (true phase functions) or reflected by the
+//        ground, averaged over the sphere at (r, mu_s);
+//   E_1: the sun scattered once, as irradiance on the ground;
+//   J_(n+1): J_n scattered once more along every direction, plus the ground
+//        lit by E_n; E_(n+1): J_n scattered onto the ground.
+// Psi_ms = J_1 + ... + J_N plus the geometric tail J_N q / (1 - q), with q
+// the ratio of the last two orders; the ground's sky light is the same sum
+// over E_n (terrain and the 400 km limb use it). N = kScatteringOrders.
+
+// The mean over the sphere (or the ground's cosine-weighted hemisphere, as
+// irradiance) of the light arriving at (r, mu_s) from `source_kind`.
+Real3 gather_order(IN(Atmosphere) atmosphere, Real r, Real mu_s, int source_kind,
+                   bool ground_irradiance) {
+  Real3 o = Real3(0.0, 0.0, r);
+  Real3 sun_dir = Real3(safe_sqrt(Real(1.0) - mu_s * mu_s), Real(0.0), mu_s);
+  Real3 sum = Real3(0.0);
+  const int n = kMultipleScatteringDirectionsSqrt;
+  for (int i = 0; i < n; ++i) {
+    for (int j = 0; j < n; ++j) {
+      Real3 d = sphere_direction(i, j, n, ground_irradiance);
+      Real t_end;
+      bool hits_ground;
+      ray_extent_inside(atmosphere, o, d, t_end, hits_ground);
+      Real3 luminance, transmittance, f;
+      integrate_scattering(atmosphere, o, d, Real(0.0), t_end, sun_dir, kMultipleScatteringSteps,
+                           source_kind, hits_ground && !ground_irradiance, luminance,
+                           transmittance, f);
+      sum += ground_irradiance ? luminance * d.z : luminance;
+    }
+  }
+  // Irradiance: int L cos dw over the hemisphere, 2 pi times the mean.
+  return sum * ((ground_irradiance ? Real(2.0) * kPi : Real(1.0)) / Real(n * n));
+}
+
+// The ground as the irradiance integrals see it: a hair above the bottom
+// sphere, so that the horizontal directions do not start inside it.
+Real ground_gather_radius(IN(Atmosphere) atmosphere) { return atmosphere.bottom_radius + Real(1.0); }
+
+// The sum of the orders and the geometric tail of the last two, per channel.
+Real3 sum_of_orders(IN(Real3) j_1, IN(Real3) j_2, IN(Real3) j_3) {
+  Real3 q = clamp(j_3 / max(j_2, Real3(1e-30)), Real3(0.0), Real3(0.9));
+  return j_1 + j_2 + j_3 + j_3 * q / (Real3(1.0) - q);
 }
 
 // --- The sun disk ---------------------------------------------------------------

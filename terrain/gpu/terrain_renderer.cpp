@@ -10,6 +10,9 @@
 
 namespace planet {
 
+// terrain.vert's u_sky_irradiance.
+constexpr GLuint kSkyIrradianceUnit = 15;
+
 namespace {
 
 glm::mat4 clip_from_view(double vertical_fov, double aspect, double near) {
@@ -107,6 +110,8 @@ TerrainStats TerrainRenderer::draw(const Camera& camera, int width, int height,
   glUniform3fv(program_.uniform("u_sun_dir_body"), 1,
                glm::value_ptr(glm::vec3(lighting.sun_dir_body)));
   glUniform1i(program_.uniform("u_has_atmosphere"), lighting.has_atmosphere ? 1 : 0);
+  glUniform1i(program_.uniform("u_has_sky_irradiance"), lighting.sky_irradiance != 0 ? 1 : 0);
+  if (lighting.sky_irradiance != 0) glBindTextureUnit(kSkyIrradianceUnit, lighting.sky_irradiance);
   glUniform3fv(program_.uniform("u_sun_irradiance"), 1,
                glm::value_ptr(lighting.solar_irradiance));
   if (lighting.has_atmosphere) {

@@ -39,6 +39,10 @@ struct TerrainLighting {
   bool has_atmosphere = false;
   glm::dvec3 atmo_scale{1.0};
   glm::vec3 solar_irradiance{1.0f};
+  // The sky's irradiance on the ground from the atmosphere technique
+  // (AtmosphereTechnique::ground_irradiance), or 0: then a one-bounce
+  // estimate of the shader's own.
+  GLuint sky_irradiance = 0;
 };
 
 class TerrainRenderer {

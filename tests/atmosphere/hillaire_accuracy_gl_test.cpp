@@ -96,15 +96,35 @@ TEST_P(HillaireAccuracyGLTest, MatchesTheGroundTruth) {
   }
 }
 
+// The orders of scattering against the paper's 1 / (1 - f_ms), on the
+// scenes where the reference is clean enough to tell: the blue noon sky
+// and the limb from orbit. Measured: noon 2.8 vs 7.6 %, 400 km 6.2 vs
+// 9.1 % (worst channel).
+TEST_F(HillaireAccuracyGLTest, ScatteringOrdersBeatThePapersSeries) {
+  for (auto [name, spp] : {std::pair{"earth_noon", 262144}, std::pair{"earth_400km", 65536}}) {
+    Scene scene = small_scene(name);
+    ImageRGB reference = reference_image(scene, spp);
+    double orders = measure_accuracy(scene, render_scene_with(scene, "hillaire"), reference)
+                        .worst_relative();
+    double paper = measure_accuracy(scene, render_scene_with(scene, "hillaire2020"), reference)
+                       .worst_relative();
+    std::printf("%s: worst relative RMSE %.2f%% with the orders, %.2f%% with the paper's\n",
+                name, 100 * orders, 100 * paper);
+    EXPECT_LT(orders, 0.8 * paper) << name;
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(CanonicalScenes, HillaireAccuracyGLTest,
-                         ::testing::Values(AccuracyCase{"earth_noon", 262144, 0.091},
-                                           AccuracyCase{"earth_400km", 65536, 0.109},
+                         // Today's errors + 20 %: a regression guard (the goals
+                         // of 2 and 5 % are not all met, see the README).
+                         ::testing::Values(AccuracyCase{"earth_noon", 262144, 0.034},
+                                           AccuracyCase{"earth_400km", 65536, 0.075},
                                            // The references below are noisier than
                                            // a tenth of the error (2-30% per pixel).
-                                           AccuracyCase{"earth_sunset", 32768, 0.178},
-                                           AccuracyCase{"earth_twilight", 65536, 0.505},
-                                           AccuracyCase{"mars_noon", 8192, 0.406},
-                                           AccuracyCase{"mars_sunset", 2048, 1.26}),
+                                           AccuracyCase{"earth_sunset", 32768, 0.125},
+                                           AccuracyCase{"earth_twilight", 65536, 0.147},
+                                           AccuracyCase{"mars_noon", 8192, 0.33},
+                                           AccuracyCase{"mars_sunset", 2048, 1.12}),
                          [](const auto& test_info) { return std::string(test_info.param.scene); });
 
 // Every canonical scene with an atmosphere, dense and strongly forward

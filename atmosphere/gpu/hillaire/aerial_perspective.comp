@@ -39,8 +39,8 @@ void main() {
     for (int s = 0; s < AERIAL_SUBSTEPS; ++s) {
       float t0 = mix(t_previous, t_slice, float(s) / float(AERIAL_SUBSTEPS));
       float t1 = mix(t_previous, t_slice, float(s + 1) / float(AERIAL_SUBSTEPS));
-      accumulate_segment(atmosphere, u_camera, dir, t0, t1, u_sun_dir, phase_r, phase_m, false,
-                         luminance, throughput, f_ms);
+      accumulate_segment(atmosphere, u_camera, dir, t0, t1, u_sun_dir, phase_r, phase_m,
+                         kSourceSky, luminance, throughput, f_ms);
     }
     t_previous = t_slice;
     ivec3 froxel = ivec3(column, k);

@@ -7,6 +7,8 @@
 
 Real3 transmittance_lookup(IN(Atmosphere) atmosphere, Real r, Real mu);
 Real3 multiple_scattering_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s);
+Real3 scattering_order_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s);
+Real3 ground_order_lookup(IN(Atmosphere) atmosphere, Real mu_s);
 
 #include "atmosphere/shaders/hillaire_functions.glsl"
 
@@ -25,7 +27,27 @@ Real3 transmittance_lookup(IN(Atmosphere) atmosphere, Real r, Real mu) {
 }
 #endif
 
-#if defined(TRANSMITTANCE_PASS) || defined(MULTIPLE_SCATTERING_PASS)
+#ifdef SCATTERING_ORDERS_PASS
+// The previous order, which the scattering-orders pass scatters once more.
+layout(binding = 7) uniform sampler2D u_previous_order;
+layout(binding = 8) uniform sampler2D u_previous_ground;
+
+Real3 scattering_order_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s) {
+  float u, v;
+  multiple_scattering_lut_uv_from_r_mu_s(atmosphere, r, mu_s, u, v);
+  return texture(u_previous_order, vec2(u, v)).rgb;
+}
+
+Real3 ground_order_lookup(IN(Atmosphere) atmosphere, Real mu_s) {
+  return texture(u_previous_ground, vec2(ground_irradiance_lut_u_from_mu_s(mu_s), 0.5)).rgb;
+}
+#else
+Real3 scattering_order_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s) { return vec3(0.0); }
+Real3 ground_order_lookup(IN(Atmosphere) atmosphere, Real mu_s) { return vec3(0.0); }
+#endif
+
+#if defined(TRANSMITTANCE_PASS) || defined(MULTIPLE_SCATTERING_PASS) || \
+    defined(SCATTERING_ORDERS_PASS)
 // The multiple-scattering pass computes the LUT this would read.
 Real3 multiple_scattering_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s) {
   return vec3(0.0);

@@ -47,7 +47,7 @@ void march(vec3 camera, vec3 dir, float t_max, bool with_ground, out vec3 lumina
   vec3 origin = camera + t_start * dir;
   vec3 f_ms;
   integrate_scattering(atmosphere, origin, dir, 0.0, t_end - t_start, u_sun_dir, PER_PIXEL_STEPS,
-                       false, with_ground, luminance, transmittance, f_ms);
+                       kSourceSky, with_ground, luminance, transmittance, f_ms);
   luminance *= atmosphere.solar_irradiance;
 }
 

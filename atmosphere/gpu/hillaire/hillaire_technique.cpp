@@ -63,6 +63,10 @@ HillaireTechnique::HillaireTechnique(Settings settings)
                                               {"TRANSMITTANCE_PASS 1"})),
       multiple_scattering_program_(Program::compute(
           "atmosphere/gpu/hillaire/multiple_scattering_lut.comp", {"MULTIPLE_SCATTERING_PASS 1"})),
+      orders_program_(Program::compute("atmosphere/gpu/hillaire/scattering_orders.comp",
+                                       {"SCATTERING_ORDERS_PASS 1"})),
+      orders_sum_program_(Program::compute("atmosphere/gpu/hillaire/scattering_orders_sum.comp",
+                                           {"SCATTERING_ORDERS_PASS 1"})),
       sky_view_program_(Program::compute("atmosphere/gpu/hillaire/sky_view_lut.comp",
                                          {fmt::format("SKY_VIEW_STEPS {}", settings.sky_view_steps)})),
       aerial_program_(
@@ -75,11 +79,21 @@ HillaireTechnique::HillaireTechnique(Settings settings)
                                          shared::kTransmittanceLutHeight)),
       multiple_scattering_lut_(make_texture_2d(GL_RGBA32F, shared::kMultipleScatteringLutSize,
                                                shared::kMultipleScatteringLutSize)),
+      ground_irradiance_lut_(make_texture_2d(GL_RGBA32F, shared::kMultipleScatteringLutSize, 1)),
       sky_view_lut_(
           make_texture_2d(GL_RGBA16F, shared::kSkyViewLutWidth, shared::kSkyViewLutHeight)),
       aerial_scattering_(make_texture_3d(GL_RGBA16F, shared::kAerialPerspectiveSize)),
       aerial_transmittance_(make_texture_3d(GL_RGBA16F, shared::kAerialPerspectiveSize)),
       block_(make_buffer(sizeof(AtmosphereBlock), nullptr)) {
+  static_assert(shared::kScatteringOrders == 3, "scattering_orders_sum.comp sums three orders");
+  const int n = shared::kMultipleScatteringLutSize;
+  for (size_t i = 0; i < order_luts_.size(); ++i) {
+    order_luts_[i] = make_texture_2d(GL_RGBA32F, n, n);
+    ground_order_luts_[i] = make_texture_2d(GL_RGBA32F, n, 1);
+  }
+  // Zero until a frame fills it (and always with the paper's LUT).
+  const float zero[4] = {0, 0, 0, 0};
+  glClearTexImage(ground_irradiance_lut_.id(), 0, GL_RGBA, GL_FLOAT, zero);
   // The sky-view LUT spans the full circle of azimuth: it wraps.
   glTextureParameteri(sky_view_lut_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
   GLuint vao = 0;
@@ -93,6 +107,54 @@ void HillaireTechnique::update(const AtmosphereModel& model) {
   model_ = model;
   AtmosphereBlock block = make_atmosphere_block(model);
   glNamedBufferSubData(block_.id(), 0, sizeof(block), &block);
+}
+
+void HillaireTechnique::prepare(GpuTimer& timer) {
+  glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, block_.id());
+  const GLbitfield barrier = GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT;
+
+  timer.begin("transmittance_lut");
+  transmittance_program_.use();
+  bind_image(0, transmittance_lut_.id(), GL_RGBA32F, false);
+  glDispatchCompute(groups(shared::kTransmittanceLutWidth), groups(shared::kTransmittanceLutHeight),
+                    1);
+  glMemoryBarrier(barrier);
+  timer.end();
+
+  glBindTextureUnit(2, transmittance_lut_.id());
+  timer.begin("multiple_scattering_lut");
+  const int n = shared::kMultipleScatteringLutSize;
+  if (settings_.multiple_scattering == MultipleScattering::kPaper) {
+    multiple_scattering_program_.use();
+    bind_image(0, multiple_scattering_lut_.id(), GL_RGBA32F, false);
+    glDispatchCompute(groups(n), groups(n), 1);
+    glMemoryBarrier(barrier);
+  } else {
+    // Each order from the one before; n rows of J_n and one of E_n.
+    orders_program_.use();
+    for (size_t k = 0; k < order_luts_.size(); ++k) {
+      glUniform1i(orders_program_.uniform("u_first_order"), k == 0 ? 1 : 0);
+      if (k > 0) {
+        glBindTextureUnit(7, order_luts_[k - 1].id());
+        glBindTextureUnit(8, ground_order_luts_[k - 1].id());
+      }
+      bind_image(0, order_luts_[k].id(), GL_RGBA32F, false);
+      bind_image(1, ground_order_luts_[k].id(), GL_RGBA32F, false);
+      glDispatchCompute(groups(n), groups(n + 1), 1);
+      glMemoryBarrier(barrier);
+    }
+    orders_sum_program_.use();
+    for (GLuint k = 0; k < 3; ++k) {
+      glBindTextureUnit(9 + k, order_luts_[k].id());
+      glBindTextureUnit(12 + k, ground_order_luts_[k].id());
+    }
+    bind_image(0, multiple_scattering_lut_.id(), GL_RGBA32F, false);
+    bind_image(1, ground_irradiance_lut_.id(), GL_RGBA32F, false);
+    glDispatchCompute(groups(n), groups(n + 1), 1);
+    glMemoryBarrier(barrier);
+  }
+  timer.end();
+  prepared_ = true;
 }
 
 void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
@@ -119,26 +181,12 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   const glm::dmat3 local = local_from_atmo(camera, sun);
   const glm::vec3 sun_local(local * sun);
 
+  if (!prepared_) prepare(timer);
+  prepared_ = false;
   glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, block_.id());
-  const GLbitfield barrier = GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT;
-
-  timer.begin("transmittance_lut");
-  transmittance_program_.use();
-  bind_image(0, transmittance_lut_.id(), GL_RGBA32F, false);
-  glDispatchCompute(groups(shared::kTransmittanceLutWidth), groups(shared::kTransmittanceLutHeight),
-                    1);
-  glMemoryBarrier(barrier);
-  timer.end();
-
   glBindTextureUnit(2, transmittance_lut_.id());
-  timer.begin("multiple_scattering_lut");
-  multiple_scattering_program_.use();
-  bind_image(0, multiple_scattering_lut_.id(), GL_RGBA32F, false);
-  glDispatchCompute(groups(shared::kMultipleScatteringLutSize),
-                    groups(shared::kMultipleScatteringLutSize), 1);
-  glMemoryBarrier(barrier);
-  timer.end();
   glBindTextureUnit(3, multiple_scattering_lut_.id());
+  const GLbitfield barrier = GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT;
 
   // No sky-view LUT and no froxels where the per-pixel path draws alone
   // (high up, deep space): a frame models no more than it shows.

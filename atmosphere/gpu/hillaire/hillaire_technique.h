@@ -1,13 +1,18 @@
 #pragma once
 // Hillaire 2020, "A Scalable and Production Ready Sky and Atmosphere
-// Rendering Technique": a transmittance LUT, a multiple-scattering LUT
-// (Psi_ms = L_2 / (1 - f_ms)), a sky-view LUT at the camera's altitude and
-// aerial-perspective froxels, all recomputed every frame from the current
-// model, and a per-pixel march with the same multiple-scattering LUT where
-// the LUTs cannot serve (high up and in space).
+// Rendering Technique": a transmittance LUT, a multiple-scattering LUT, a
+// sky-view LUT at the camera's altitude and aerial-perspective froxels, all
+// recomputed every frame from the current model, and a per-pixel march
+// with the same multiple-scattering LUT where the LUTs cannot serve (high
+// up and in space). The multiple-scattering LUT sums the orders of
+// scattering one by one on the paper's 2D table (technique "hillaire"), or
+// takes the paper's Psi_ms = L_2 / (1 - f_ms) (technique "hillaire2020");
+// see hillaire_functions.glsl for why.
 #include "atmosphere/gpu/technique.h"
 #include "render/gl/program.h"
 #include "render/gl/texture.h"
+
+#include <array>
 
 namespace planet {
 
@@ -16,7 +21,9 @@ class HillaireTechnique final : public AtmosphereTechnique {
   // Which path draws the frame: chosen by altitude (with a blend between),
   // or forced, for measurements and tests.
   enum class Path { kByAltitude, kLuts, kPerPixel };
+  enum class MultipleScattering { kOrders, kPaper };
   struct Settings {
+    MultipleScattering multiple_scattering = MultipleScattering::kOrders;
     int sky_view_steps = 30;
     int per_pixel_steps = 40;
     int aerial_substeps = 2;  // per froxel slice
@@ -30,9 +37,18 @@ class HillaireTechnique final : public AtmosphereTechnique {
   explicit HillaireTechnique(Settings settings);
   HillaireTechnique() : HillaireTechnique(Settings{}) {}
 
-  std::string name() const override { return "hillaire"; }
+  std::string name() const override {
+    return settings_.multiple_scattering == MultipleScattering::kPaper ? "hillaire2020"
+                                                                       : "hillaire";
+  }
   void update(const AtmosphereModel& model) override;
+  void prepare(GpuTimer& timer) override;
   void render(const SkyFrame& frame, GpuTimer& timer) override;
+  GLuint ground_irradiance() const override {
+    return settings_.multiple_scattering == MultipleScattering::kOrders
+               ? ground_irradiance_lut_.id()
+               : 0;
+  }
 
   const Settings& settings() const { return settings_; }
   // Weight of the LUT path in the last frame (1: LUTs only, 0: per pixel).
@@ -43,6 +59,14 @@ class HillaireTechnique final : public AtmosphereTechnique {
   // The LUTs, for tests and debugging views.
   GLuint transmittance_lut() const { return transmittance_lut_.id(); }
   GLuint multiple_scattering_lut() const { return multiple_scattering_lut_.id(); }
+  // The orders J_n (kMultipleScatteringLutSize square) and E_n (one row) of
+  // the last frame, n = 1 ... kScatteringOrders; empty with the paper's LUT.
+  GLuint scattering_order_lut(int n) const { return order_luts_[size_t(n - 1)].id(); }
+  GLuint ground_order_lut(int n) const { return ground_order_luts_[size_t(n - 1)].id(); }
+  // The sky's irradiance on the ground per unit solar irradiance over the
+  // sun's zenith cosine (one row, the multiple-scattering LUT's mu_s
+  // mapping); zero with the paper's LUT, which has no such sum.
+  GLuint ground_irradiance_lut() const { return ground_irradiance_lut_.id(); }
   GLuint sky_view_lut() const { return sky_view_lut_.id(); }
   GLuint aerial_scattering() const { return aerial_scattering_.id(); }
   GLuint aerial_transmittance() const { return aerial_transmittance_.id(); }
@@ -50,12 +74,14 @@ class HillaireTechnique final : public AtmosphereTechnique {
  private:
   Settings settings_;
   AtmosphereModel model_;
-  Program transmittance_program_, multiple_scattering_program_, sky_view_program_,
-      aerial_program_, sky_program_;
-  Texture transmittance_lut_, multiple_scattering_lut_, sky_view_lut_, aerial_scattering_,
-      aerial_transmittance_;
+  Program transmittance_program_, multiple_scattering_program_, orders_program_,
+      orders_sum_program_, sky_view_program_, aerial_program_, sky_program_;
+  Texture transmittance_lut_, multiple_scattering_lut_, ground_irradiance_lut_, sky_view_lut_,
+      aerial_scattering_, aerial_transmittance_;
+  std::array<Texture, 3> order_luts_, ground_order_luts_;
   Buffer block_;
   VertexArray empty_vao_;
+  bool prepared_ = false;  // prepare() ran since the last render()
   double lut_weight_ = 1.0;
   double aerial_range_ = 0.0;
 };

@@ -26,6 +26,6 @@ void main() {
   ray_extent_inside(atmosphere, origin, dir, t_end, hits_ground);
   vec3 luminance, transmittance, f_ms;
   integrate_scattering(atmosphere, origin, dir, 0.0, t_end, u_sun_dir_local, SKY_VIEW_STEPS,
-                       false, hits_ground, luminance, transmittance, f_ms);
+                       kSourceSky, hits_ground, luminance, transmittance, f_ms);
   imageStore(u_output, texel, vec4(luminance, 1.0));
 }

@@ -17,6 +17,8 @@ uniform int u_has_atmosphere;
 uniform vec3 u_atmo_scale;
 uniform vec3 u_camera_atmo;
 uniform vec3 u_sun_dir_atmo;
+uniform int u_has_sky_irradiance;
+layout(binding = 15) uniform sampler2D u_sky_irradiance;
 
 out vec3 v_normal_body;
 out vec3 v_albedo;
@@ -53,5 +55,12 @@ void main() {
     // Neyret 2008, eq. 15, for the full integral).
     float sky_fraction = 0.5 * (1.0 + dot(normalize(a_normal), up));
     v_sky_irradiance = 0.5 * max(mu_s, 0.0) * (vec3(1.0) - v_sun_transmittance) * sky_fraction;
+    // Better, where the technique has it: the sky's irradiance on level
+    // ground summed over all orders of scattering, times the same fraction.
+    if (u_has_sky_irradiance != 0) {
+      float n = float(textureSize(u_sky_irradiance, 0).x);
+      float u = texture_coord_from_unit_range(sky_irradiance_u_from_mu_s(mu_s), n);
+      v_sky_irradiance = texture(u_sky_irradiance, vec2(u, 0.5)).rgb * sky_fraction;
+    }
   }
 }
