@@ -21,19 +21,19 @@ namespace {
 Real3 transmittance_lookup(IN(Atmosphere) atmosphere, Real r, Real mu) {
   return transmittance_to_top(atmosphere, r, mu, 40);
 }
-Real3 multiple_scattering_lookup(IN(Atmosphere), Real, Real) { return Real3(0.0); }
+Real3 multiple_scattering_lookup(IN(Atmosphere), Real, Real, int) { return Real3(0.0); }
 
 // The previous order of scattering, for the CPU evaluation of the next one:
-// RGBA float tables as the GPU holds them (J_n: n x n texels, E_n: one
-// row of n), sampled as GL samples a texture (bilinear between texel
-// centres, clamped to the edge). A test points these at the tables it read
-// back; left empty, the lookups give zero.
-struct OrderTables {
-  const float* order = nullptr;
-  const float* ground = nullptr;
-  int size = 0;
+// an RGBA float table as the GPU holds it (hillaire_technique.h: the parts
+// side by side over n rows, the ground's irradiance in row n), sampled as GL
+// samples a texture (bilinear between texel centres, clamped to the edge).
+// A test points this at the table it read back; left empty, the lookups
+// give zero.
+struct OrderTable {
+  const float* texels = nullptr;
+  int size = 0;  // n
 };
-OrderTables cpu_order_tables;
+OrderTable cpu_order_table;
 
 Real3 sample_table(const float* table, int width, int height, Real u, Real v) {
   Real x = glm::clamp(u * width - 0.5, 0.0, double(width - 1));
@@ -48,27 +48,26 @@ Real3 sample_table(const float* table, int width, int height, Real u, Real v) {
   return glm::mix(glm::mix(at(x0, y0), at(x1, y0), fx), glm::mix(at(x0, y1), at(x1, y1), fx), fy);
 }
 
-Real3 multiple_scattering_unit_lookup(const float* table, int width, int height, Real u,
-                                      Real v) {
-  return table ? sample_table(table, width, height, u, v) : Real3(0.0);
-}
-
-Real3 scattering_order_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s);
+Real3 scattering_order_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s, int part);
 Real3 ground_order_lookup(IN(Atmosphere) atmosphere, Real mu_s);
 
 #include "atmosphere/shaders/hillaire_functions.glsl"
 
-Real3 scattering_order_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s) {
+Real3 scattering_order_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s, int part) {
+  const OrderTable& t = cpu_order_table;
+  if (!t.texels) return Real3(0.0);
   Real u, v;
   multiple_scattering_lut_uv_from_r_mu_s(atmosphere, r, mu_s, u, v);
-  const OrderTables& t = cpu_order_tables;
-  return multiple_scattering_unit_lookup(t.order, t.size, t.size, u, v);
+  return sample_table(t.texels, kFieldParts * t.size, t.size + 1, (part + u) / kFieldParts,
+                      v * t.size / (t.size + 1));
 }
 
 Real3 ground_order_lookup(IN(Atmosphere), Real mu_s) {
-  const OrderTables& t = cpu_order_tables;
-  return multiple_scattering_unit_lookup(t.ground, t.size, 1,
-                                         ground_irradiance_lut_u_from_mu_s(mu_s), 0.5);
+  const OrderTable& t = cpu_order_table;
+  if (!t.texels) return Real3(0.0);
+  return sample_table(t.texels, kFieldParts * t.size, t.size + 1,
+                      ground_irradiance_lut_u_from_mu_s(mu_s) / kFieldParts,
+                      (t.size + 0.5) / (t.size + 1));
 }
 #pragma GCC diagnostic pop
 }  // namespace

@@ -113,7 +113,12 @@ TEST_F(HillaireGLTest, PaperMultipleScatteringLutMatchesCpuIntegral) {
   HillaireTechnique* technique = make_renderer(settings);
   render({glm::radians(46.5), glm::radians(8.0), 2.0}, 0.0, 10.0, 30.0, 180.0);
   const int n = shared::kMultipleScatteringLutSize;
-  auto lut = read_texture(technique->multiple_scattering_lut(), n, n);
+  // The mean's part; the moment's parts stay zero with the paper's LUT.
+  const int width = shared::kFieldParts * n;
+  auto lut = read_texture(technique->multiple_scattering_lut(), width, n);
+  for (size_t i = 0; i < lut.size(); i += 4) {
+    if (int(i / 4) % width >= n) ASSERT_EQ(lut[i], 0.0f);
+  }
   double worst = 0.0;
   // Every third texel in each direction, corners included: the CPU
   // integral in double takes ~10 ms a texel.
@@ -124,7 +129,7 @@ TEST_F(HillaireGLTest, PaperMultipleScatteringLutMatchesCpuIntegral) {
                                                      r, mu_s);
       glm::dvec3 cpu = shared::multiple_scattering_texel(atmosphere_, r, mu_s);
       for (int c = 0; c < 3; ++c) {
-        double gpu = lut[(size_t(y) * n + size_t(x)) * 4 + size_t(c)];
+        double gpu = lut[(size_t(y) * size_t(width) + size_t(x)) * 4 + size_t(c)];
         // The GPU reads the sun's transmittance from the bilinear LUT, the
         // CPU integrates it at the exact (r, mu): 0.2% covers the
         // interpolation (0.06% measured), plus an absolute floor for the
@@ -140,63 +145,71 @@ TEST_F(HillaireGLTest, PaperMultipleScatteringLutMatchesCpuIntegral) {
   std::printf("paper's multiple-scattering LUT: worst error %.3f of the allowed\n", worst);
 }
 
-// The orders of scattering: each GPU order against the CPU's integral of
-// the same order from the GPU's previous one (read back, so that an error
-// cannot hide by compounding), and the LUT against their sum.
+// The orders of scattering: each GPU order (mean, moment, ground) against
+// the CPU's integral of the same order from the GPU's previous one (read
+// back, so that an error cannot hide by compounding), and the LUT against
+// their sum.
 TEST_F(HillaireGLTest, ScatteringOrdersMatchCpuIntegrals) {
   HillaireTechnique* technique = make_renderer();
   render({glm::radians(46.5), glm::radians(8.0), 2.0}, 0.0, 10.0, 30.0, 180.0);
   const int n = shared::kMultipleScatteringLutSize;
-  std::vector<std::vector<float>> orders, grounds;
+  const int width = shared::kFieldParts * n;
+  std::vector<std::vector<float>> orders;
   for (int k = 1; k <= shared::kScatteringOrders; ++k) {
-    orders.push_back(read_texture(technique->scattering_order_lut(k), n, n));
-    grounds.push_back(read_texture(technique->ground_order_lut(k), n, 1));
+    orders.push_back(read_texture(technique->scattering_order_lut(k), width, n + 1));
   }
-  // Same allowance as the paper's LUT: bilinear transmittance (and here
-  // the previous order) on the GPU against exact values on the CPU.
-  auto check = [&](const glm::dvec3& cpu, const float* gpu, const char* what, int k, int x,
-                   int y) {
+  auto texel = [&](const std::vector<float>& table, int x, int y) {
+    const float* t = &table[(size_t(y) * size_t(width) + size_t(x)) * 4];
+    return glm::dvec3(t[0], t[1], t[2]);
+  };
+  // Same allowance as the paper's LUT (bilinear transmittance, and here
+  // the previous order, on the GPU against exact values on the CPU), on
+  // the scale of the mean for the moment, which can pass through zero.
+  auto check = [&](const glm::dvec3& cpu, const glm::dvec3& gpu, const glm::dvec3& scale,
+                   const char* what, int k, int x, int y) {
     for (int c = 0; c < 3; ++c) {
-      double allowed = 2e-3 * cpu[c] + 1e-7;
-      EXPECT_NEAR(gpu[c], cpu[c], allowed) << what << " " << k << " texel " << x << ", " << y
-                                           << " channel " << c;
+      EXPECT_NEAR(gpu[c], cpu[c], 2e-3 * std::abs(scale[c]) + 1e-7)
+          << what << " of order " << k << " at texel " << x << ", " << y << " channel " << c;
     }
   };
   for (int k = 1; k <= shared::kScatteringOrders; ++k) {
     const int source = k == 1 ? shared::kSourceFirstOrder : shared::kSourceNextOrder;
-    if (k > 1) {
-      shared::cpu_order_tables = {orders[size_t(k - 2)].data(), grounds[size_t(k - 2)].data(),
-                                  n};
-    }
+    const std::vector<float>& gpu = orders[size_t(k - 1)];
+    if (k > 1) shared::cpu_order_table = {orders[size_t(k - 2)].data(), n};
     for (int x = 0; x < n; x += 5) {
       double r, mu_s;
+      glm::dvec3 up, sun;
       shared::multiple_scattering_lut_r_mu_s_from_uv(atmosphere_, (x + 0.5) / n, 0.5 / n, r, mu_s);
       glm::dvec3 e = shared::gather_order(atmosphere_, shared::ground_gather_radius(atmosphere_),
-                                          mu_s, source, true);
-      check(e, &grounds[size_t(k - 1)][size_t(x) * 4], "E", k, x, 0);
+                                          mu_s, source, true, up, sun);
+      check(e, texel(gpu, x, n), e, "E", k, x, n);
       for (int y = 0; y < n; y += 5) {
         shared::multiple_scattering_lut_r_mu_s_from_uv(atmosphere_, (x + 0.5) / n, (y + 0.5) / n,
                                                        r, mu_s);
-        glm::dvec3 j = shared::gather_order(atmosphere_, r, mu_s, source, false);
-        check(j, &orders[size_t(k - 1)][(size_t(y) * n + size_t(x)) * 4], "J", k, x, y);
+        glm::dvec3 j = shared::gather_order(atmosphere_, r, mu_s, source, false, up, sun);
+        check(j, texel(gpu, x, y), j, "J", k, x, y);
+        check(up, texel(gpu, x + n, y), j, "moment up", k, x, y);
+        check(sun, texel(gpu, x + 2 * n, y), j, "moment toward the sun", k, x, y);
       }
     }
   }
-  shared::cpu_order_tables = {};
+  shared::cpu_order_table = {};
   // The LUT is the sum with its tail, texel for texel.
-  auto lut = read_texture(technique->multiple_scattering_lut(), n, n);
-  for (size_t i = 0; i < lut.size(); i += 4) {
-    auto at = [&](size_t k) {
-      return glm::dvec3(orders[k][i], orders[k][i + 1], orders[k][i + 2]);
-    };
-    glm::dvec3 sum = shared::sum_of_orders(at(0), at(1), at(2));
-    for (size_t c = 0; c < 3; ++c) EXPECT_NEAR(lut[i + c], sum[int(c)], 1e-5 * sum[int(c)] + 1e-12);
+  auto lut = read_texture(technique->multiple_scattering_lut(), width, n);
+  for (int y = 0; y < n; ++y) {
+    for (int x = 0; x < width; ++x) {
+      int mean_x = x % n;
+      glm::dvec3 sum = shared::sum_of_orders(texel(orders[1], mean_x, y), texel(orders[2], mean_x, y),
+                                             texel(orders[0], x, y), texel(orders[1], x, y),
+                                             texel(orders[2], x, y));
+      glm::dvec3 got = texel(lut, x, y);
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], sum[c], 1e-5 * std::abs(sum[c]) + 1e-12);
+    }
   }
-  // Later orders are weaker: the series converges (sunlit texels).
-  size_t ground_noon = (size_t(0) * n + size_t(n - 1)) * 4;
-  for (size_t c = 0; c < 3; ++c) {
-    EXPECT_GT(orders[0][ground_noon + c], orders[1][ground_noon + c]);
-    EXPECT_GT(orders[1][ground_noon + c], orders[2][ground_noon + c]);
+  // Later orders are weaker at the sunlit ground: the series converges.
+  for (int c = 0; c < 3; ++c) {
+    EXPECT_GT(texel(orders[0], n - 1, 0)[c], texel(orders[1], n - 1, 0)[c]);
+    EXPECT_GT(texel(orders[1], n - 1, 0)[c], texel(orders[2], n - 1, 0)[c]);
   }
 }
 
@@ -222,9 +235,10 @@ TEST_F(HillaireGLTest, NoNanOrInfFromTheGroundToDeepSpaceAndInsideThePlanet) {
                                           shared::kTransmittanceLutWidth,
                                           shared::kTransmittanceLutHeight)))
           << "transmittance LUT";
-      EXPECT_TRUE(all_finite(read_texture(technique->multiple_scattering_lut(),
-                                          shared::kMultipleScatteringLutSize,
-                                          shared::kMultipleScatteringLutSize)))
+      EXPECT_TRUE(all_finite(read_texture(
+          technique->multiple_scattering_lut(),
+          shared::kFieldParts * shared::kMultipleScatteringLutSize,
+          shared::kMultipleScatteringLutSize)))
           << "multiple-scattering LUT";
       if (technique->lut_weight() > 0.0) {
         EXPECT_TRUE(all_finite(read_texture(technique->sky_view_lut(), shared::kSkyViewLutWidth,

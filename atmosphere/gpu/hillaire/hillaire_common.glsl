@@ -6,8 +6,8 @@
 #define INOUT(T) inout T
 
 Real3 transmittance_lookup(IN(Atmosphere) atmosphere, Real r, Real mu);
-Real3 multiple_scattering_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s);
-Real3 scattering_order_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s);
+Real3 multiple_scattering_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s, int part);
+Real3 scattering_order_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s, int part);
 Real3 ground_order_lookup(IN(Atmosphere) atmosphere, Real mu_s);
 
 #include "atmosphere/shaders/hillaire_functions.glsl"
@@ -27,37 +27,48 @@ Real3 transmittance_lookup(IN(Atmosphere) atmosphere, Real r, Real mu) {
 }
 #endif
 
-#ifdef SCATTERING_ORDERS_PASS
-// The previous order, which the scattering-orders pass scatters once more.
-layout(binding = 7) uniform sampler2D u_previous_order;
-layout(binding = 8) uniform sampler2D u_previous_ground;
+// A part of a table whose kFieldParts parts stand side by side along u,
+// at (u, v) within the part; `rows` of which the part's n are the first.
+vec3 sample_part(sampler2D table, float u, float v, int part, int rows) {
+  float n = float(kMultipleScatteringLutSize);
+  return texture(table, vec2((float(part) + u) / float(kFieldParts), v * n / float(rows))).rgb;
+}
 
-Real3 scattering_order_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s) {
+#ifdef SCATTERING_ORDERS_PASS
+// The previous order, which the scattering-orders pass scatters once more:
+// its parts over n rows, and the ground's irradiance in row n.
+layout(binding = 7) uniform sampler2D u_previous_order;
+
+Real3 scattering_order_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s, int part) {
   float u, v;
   multiple_scattering_lut_uv_from_r_mu_s(atmosphere, r, mu_s, u, v);
-  return texture(u_previous_order, vec2(u, v)).rgb;
+  return sample_part(u_previous_order, u, v, part, kMultipleScatteringLutSize + 1);
 }
 
 Real3 ground_order_lookup(IN(Atmosphere) atmosphere, Real mu_s) {
-  return texture(u_previous_ground, vec2(ground_irradiance_lut_u_from_mu_s(mu_s), 0.5)).rgb;
+  float n = float(kMultipleScatteringLutSize);
+  float u = ground_irradiance_lut_u_from_mu_s(mu_s);
+  return texture(u_previous_order, vec2(u / float(kFieldParts), (n + 0.5) / (n + 1.0))).rgb;
 }
 #else
-Real3 scattering_order_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s) { return vec3(0.0); }
+Real3 scattering_order_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s, int part) {
+  return vec3(0.0);
+}
 Real3 ground_order_lookup(IN(Atmosphere) atmosphere, Real mu_s) { return vec3(0.0); }
 #endif
 
 #if defined(TRANSMITTANCE_PASS) || defined(MULTIPLE_SCATTERING_PASS) || \
     defined(SCATTERING_ORDERS_PASS)
 // The multiple-scattering pass computes the LUT this would read.
-Real3 multiple_scattering_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s) {
+Real3 multiple_scattering_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s, int part) {
   return vec3(0.0);
 }
 #else
 layout(binding = 3) uniform sampler2D u_multiple_scattering_lut;
 
-Real3 multiple_scattering_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s) {
+Real3 multiple_scattering_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s, int part) {
   float u, v;
   multiple_scattering_lut_uv_from_r_mu_s(atmosphere, r, mu_s, u, v);
-  return texture(u_multiple_scattering_lut, vec2(u, v)).rgb;
+  return sample_part(u_multiple_scattering_lut, u, v, part, kMultipleScatteringLutSize);
 }
 #endif

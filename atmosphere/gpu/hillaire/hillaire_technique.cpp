@@ -77,8 +77,9 @@ HillaireTechnique::HillaireTechnique(Settings settings)
                                      {fmt::format("PER_PIXEL_STEPS {}", settings.per_pixel_steps)})),
       transmittance_lut_(make_texture_2d(GL_RGBA32F, shared::kTransmittanceLutWidth,
                                          shared::kTransmittanceLutHeight)),
-      multiple_scattering_lut_(make_texture_2d(GL_RGBA32F, shared::kMultipleScatteringLutSize,
-                                               shared::kMultipleScatteringLutSize)),
+      multiple_scattering_lut_(make_texture_2d(
+          GL_RGBA32F, shared::kFieldParts * shared::kMultipleScatteringLutSize,
+          shared::kMultipleScatteringLutSize)),
       ground_irradiance_lut_(make_texture_2d(GL_RGBA32F, shared::kMultipleScatteringLutSize, 1)),
       sky_view_lut_(
           make_texture_2d(GL_RGBA16F, shared::kSkyViewLutWidth, shared::kSkyViewLutHeight)),
@@ -87,13 +88,14 @@ HillaireTechnique::HillaireTechnique(Settings settings)
       block_(make_buffer(sizeof(AtmosphereBlock), nullptr)) {
   static_assert(shared::kScatteringOrders == 3, "scattering_orders_sum.comp sums three orders");
   const int n = shared::kMultipleScatteringLutSize;
-  for (size_t i = 0; i < order_luts_.size(); ++i) {
-    order_luts_[i] = make_texture_2d(GL_RGBA32F, n, n);
-    ground_order_luts_[i] = make_texture_2d(GL_RGBA32F, n, 1);
+  for (Texture& order : order_luts_) {
+    order = make_texture_2d(GL_RGBA32F, shared::kFieldParts * n, n + 1);
   }
-  // Zero until a frame fills it (and always with the paper's LUT).
+  // Zero until a frame fills them; with the paper's LUT the ground's sky
+  // light and the moment stay zero.
   const float zero[4] = {0, 0, 0, 0};
   glClearTexImage(ground_irradiance_lut_.id(), 0, GL_RGBA, GL_FLOAT, zero);
+  glClearTexImage(multiple_scattering_lut_.id(), 0, GL_RGBA, GL_FLOAT, zero);
   // The sky-view LUT spans the full circle of azimuth: it wraps.
   glTextureParameteri(sky_view_lut_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
   GLuint vao = 0;
@@ -130,24 +132,18 @@ void HillaireTechnique::prepare(GpuTimer& timer) {
     glDispatchCompute(groups(n), groups(n), 1);
     glMemoryBarrier(barrier);
   } else {
-    // Each order from the one before; n rows of J_n and one of E_n.
+    // Each order from the one before: n rows of J_n and its moment, and
+    // one row of E_n.
     orders_program_.use();
     for (size_t k = 0; k < order_luts_.size(); ++k) {
       glUniform1i(orders_program_.uniform("u_first_order"), k == 0 ? 1 : 0);
-      if (k > 0) {
-        glBindTextureUnit(7, order_luts_[k - 1].id());
-        glBindTextureUnit(8, ground_order_luts_[k - 1].id());
-      }
+      if (k > 0) glBindTextureUnit(7, order_luts_[k - 1].id());
       bind_image(0, order_luts_[k].id(), GL_RGBA32F, false);
-      bind_image(1, ground_order_luts_[k].id(), GL_RGBA32F, false);
       glDispatchCompute(groups(n), groups(n + 1), 1);
       glMemoryBarrier(barrier);
     }
     orders_sum_program_.use();
-    for (GLuint k = 0; k < 3; ++k) {
-      glBindTextureUnit(9 + k, order_luts_[k].id());
-      glBindTextureUnit(12 + k, ground_order_luts_[k].id());
-    }
+    for (GLuint k = 0; k < 3; ++k) glBindTextureUnit(9 + k, order_luts_[k].id());
     bind_image(0, multiple_scattering_lut_.id(), GL_RGBA32F, false);
     bind_image(1, ground_irradiance_lut_.id(), GL_RGBA32F, false);
     glDispatchCompute(groups(n), groups(n + 1), 1);

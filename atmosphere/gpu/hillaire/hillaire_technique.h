@@ -59,10 +59,12 @@ class HillaireTechnique final : public AtmosphereTechnique {
   // The LUTs, for tests and debugging views.
   GLuint transmittance_lut() const { return transmittance_lut_.id(); }
   GLuint multiple_scattering_lut() const { return multiple_scattering_lut_.id(); }
-  // The orders J_n (kMultipleScatteringLutSize square) and E_n (one row) of
-  // the last frame, n = 1 ... kScatteringOrders; empty with the paper's LUT.
+  // The multiple-scattering LUT is kFieldParts tables of n x n side by side
+  // (mean, moment up, moment toward the sun; n = kMultipleScatteringLutSize).
+  // Order n = 1 ... kScatteringOrders of the last frame: the same parts
+  // over n rows, and E_n in the first n texels of row n; not filled with
+  // the paper's LUT.
   GLuint scattering_order_lut(int n) const { return order_luts_[size_t(n - 1)].id(); }
-  GLuint ground_order_lut(int n) const { return ground_order_luts_[size_t(n - 1)].id(); }
   // The sky's irradiance on the ground per unit solar irradiance over the
   // sun's zenith cosine (one row, the multiple-scattering LUT's mu_s
   // mapping); zero with the paper's LUT, which has no such sum.
@@ -78,7 +80,7 @@ class HillaireTechnique final : public AtmosphereTechnique {
       orders_sum_program_, sky_view_program_, aerial_program_, sky_program_;
   Texture transmittance_lut_, multiple_scattering_lut_, ground_irradiance_lut_, sky_view_lut_,
       aerial_scattering_, aerial_transmittance_;
-  std::array<Texture, 3> order_luts_, ground_order_luts_;
+  std::array<Texture, 3> order_luts_;
   Buffer block_;
   VertexArray empty_vao_;
   bool prepared_ = false;  // prepare() ran since the last render()
