@@ -96,6 +96,12 @@ void main() {
   bool hits_ground = ray_sphere(camera, dir, atmosphere.bottom_radius, t_ground_near,
                                 t_ground_far) && t_ground_near > 0.0;
   bool open_sky = depth == 0.0 && !hits_ground;
+  // The air in front of a surface ends at the bottom sphere: a coarse tile's
+  // facets are chords that sag below it (km from high up), and the model's
+  // air is not defined beneath its ground, where its density would grow
+  // without bound. From 400 km the march through the sag made the ground
+  // near the limb 5-8 % too bright.
+  if (depth > 0.0 && hits_ground) t_surface = min(t_surface, t_ground_near);
 
   vec3 lut_radiance = vec3(0.0);
   if (u_lut_weight > 0.0) {
