@@ -30,7 +30,7 @@ const int kFieldMomentUp = 1;
 const int kFieldMomentSun = 2;
 const int kFieldParts = 3;
 // Orders of scattering summed explicitly before the geometric tail.
-const int kScatteringOrders = 3;
+const int kScatteringOrders = 4;
 // 8 x 8 stratified directions over the sphere (Hillaire 2020, sec. 5.5: 64).
 const int kMultipleScatteringDirectionsSqrt = 8;
 const int kMultipleScatteringSteps = 20;
@@ -454,12 +454,15 @@ Real3 gather_order(IN(Atmosphere) atmosphere, Real r, Real mu_s, int source_kind
 // sphere, so that the horizontal directions do not start inside it.
 Real ground_gather_radius(IN(Atmosphere) atmosphere) { return atmosphere.bottom_radius + Real(1.0); }
 
-// The sum of the orders x_1..x_3 and a geometric tail whose ratio q is
-// that of the last two orders' mean radiance j_2, j_3, per channel (the
-// moments take the same tail as their means).
-Real3 sum_of_orders(IN(Real3) j_2, IN(Real3) j_3, IN(Real3) x_1, IN(Real3) x_2, IN(Real3) x_3) {
-  Real3 q = clamp(j_3 / max(j_2, Real3(1e-30)), Real3(0.0), Real3(0.9));
-  return x_1 + x_2 + x_3 + x_3 * q / (Real3(1.0) - q);
+// The sum x_sum of orders 1 to N and the geometric tail of the orders
+// beyond, x_N q / (1 - q), whose ratio q is that of the last two orders'
+// mean radiance j_(N-1), j_N, per channel (a moment takes the tail of its
+// mean). The ratio still grows with the order: with N = 3 the tail left
+// the blue ground's sky light 1 % below N = 5; with N = 4, 0.3 %.
+Real3 with_geometric_tail(IN(Real3) j_before_last, IN(Real3) j_last, IN(Real3) x_sum,
+                          IN(Real3) x_last) {
+  Real3 q = clamp(j_last / max(j_before_last, Real3(1e-30)), Real3(0.0), Real3(0.9));
+  return x_sum + x_last * q / (Real3(1.0) - q);
 }
 
 // --- The sun disk ---------------------------------------------------------------

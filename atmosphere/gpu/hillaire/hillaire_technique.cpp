@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <tuple>
 
 namespace planet {
 
@@ -86,7 +87,8 @@ HillaireTechnique::HillaireTechnique(Settings settings)
       aerial_scattering_(make_texture_3d(GL_RGBA16F, shared::kAerialPerspectiveSize)),
       aerial_transmittance_(make_texture_3d(GL_RGBA16F, shared::kAerialPerspectiveSize)),
       block_(make_buffer(sizeof(AtmosphereBlock), nullptr)) {
-  static_assert(shared::kScatteringOrders == 3, "scattering_orders_sum.comp sums three orders");
+  static_assert(shared::kScatteringOrders == int(std::tuple_size_v<decltype(order_luts_)>),
+                "one table per order of scattering");
   const int n = shared::kMultipleScatteringLutSize;
   for (Texture& order : order_luts_) {
     order = make_texture_2d(GL_RGBA32F, shared::kFieldParts * n, n + 1);
@@ -143,7 +145,9 @@ void HillaireTechnique::prepare(GpuTimer& timer) {
       glMemoryBarrier(barrier);
     }
     orders_sum_program_.use();
-    for (GLuint k = 0; k < 3; ++k) glBindTextureUnit(9 + k, order_luts_[k].id());
+    for (size_t k = 0; k < order_luts_.size(); ++k) {
+      glBindTextureUnit(GLuint(9 + k), order_luts_[k].id());
+    }
     bind_image(0, multiple_scattering_lut_.id(), GL_RGBA32F, false);
     bind_image(1, ground_irradiance_lut_.id(), GL_RGBA32F, false);
     glDispatchCompute(groups(n), groups(n + 1), 1);

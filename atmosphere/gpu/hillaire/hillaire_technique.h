@@ -80,7 +80,7 @@ class HillaireTechnique final : public AtmosphereTechnique {
       orders_sum_program_, sky_view_program_, aerial_program_, sky_program_;
   Texture transmittance_lut_, multiple_scattering_lut_, ground_irradiance_lut_, sky_view_lut_,
       aerial_scattering_, aerial_transmittance_;
-  std::array<Texture, 3> order_luts_;
+  std::array<Texture, 4> order_luts_;  // kScatteringOrders
   Buffer block_;
   VertexArray empty_vao_;
   bool prepared_ = false;  // prepare() ran since the last render()

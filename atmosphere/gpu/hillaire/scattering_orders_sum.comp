@@ -1,22 +1,21 @@
 // The multiple-scattering LUT (mean and moment, side by side) and the
 // ground's sky irradiance as the sums of the orders that
 // scattering_orders.comp computed, with their geometric tails
-// (sum_of_orders in hillaire_functions.glsl).
+// (with_geometric_tail in hillaire_functions.glsl).
 #include "atmosphere/gpu/hillaire/hillaire_common.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform writeonly image2D u_multiple_scattering;
 layout(rgba32f, binding = 1) uniform writeonly image2D u_ground_irradiance;
 
-layout(binding = 9) uniform sampler2D u_order_1;
-layout(binding = 10) uniform sampler2D u_order_2;
-layout(binding = 11) uniform sampler2D u_order_3;
+layout(binding = 9) uniform sampler2D u_orders[kScatteringOrders];
 
 vec3 summed(ivec2 texel, ivec2 mean_texel) {
-  return sum_of_orders(texelFetch(u_order_2, mean_texel, 0).rgb,
-                       texelFetch(u_order_3, mean_texel, 0).rgb,
-                       texelFetch(u_order_1, texel, 0).rgb, texelFetch(u_order_2, texel, 0).rgb,
-                       texelFetch(u_order_3, texel, 0).rgb);
+  vec3 sum = vec3(0.0);
+  for (int k = 0; k < kScatteringOrders; ++k) sum += texelFetch(u_orders[k], texel, 0).rgb;
+  return with_geometric_tail(texelFetch(u_orders[kScatteringOrders - 2], mean_texel, 0).rgb,
+                             texelFetch(u_orders[kScatteringOrders - 1], mean_texel, 0).rgb, sum,
+                             texelFetch(u_orders[kScatteringOrders - 1], texel, 0).rgb);
 }
 
 void main() {
