@@ -25,15 +25,11 @@ Real3 multiple_scattering_lookup(IN(Atmosphere), Real, Real, int) { return Real3
 
 // The previous order of scattering, for the CPU evaluation of the next one:
 // an RGBA float table as the GPU holds it (hillaire_technique.h: the parts
-// side by side over n rows, the ground's irradiance in row n), sampled as GL
+// side by side over h rows, the ground's irradiance in row h), sampled as GL
 // samples a texture (bilinear between texel centres, clamped to the edge).
-// A test points this at the table it read back; left empty, the lookups
+// A test points this at the table it read back; left null, the lookups
 // give zero.
-struct OrderTable {
-  const float* texels = nullptr;
-  int size = 0;  // n
-};
-OrderTable cpu_order_table;
+const float* cpu_order_table = nullptr;
 
 Real3 sample_table(const float* table, int width, int height, Real u, Real v) {
   Real x = glm::clamp(u * width - 0.5, 0.0, double(width - 1));
@@ -54,20 +50,20 @@ Real3 ground_order_lookup(IN(Atmosphere) atmosphere, Real mu_s);
 #include "atmosphere/shaders/hillaire_functions.glsl"
 
 Real3 scattering_order_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s, int part) {
-  const OrderTable& t = cpu_order_table;
-  if (!t.texels) return Real3(0.0);
+  if (!cpu_order_table) return Real3(0.0);
+  const int w = kMultipleScatteringLutWidth, h = kMultipleScatteringLutHeight;
   Real u, v;
   multiple_scattering_lut_uv_from_r_mu_s(atmosphere, r, mu_s, u, v);
-  return sample_table(t.texels, kFieldParts * t.size, t.size + 1, (part + u) / kFieldParts,
-                      v * t.size / (t.size + 1));
+  return sample_table(cpu_order_table, kFieldParts * w, h + 1, (part + u) / kFieldParts,
+                      v * h / (h + 1));
 }
 
 Real3 ground_order_lookup(IN(Atmosphere), Real mu_s) {
-  const OrderTable& t = cpu_order_table;
-  if (!t.texels) return Real3(0.0);
-  return sample_table(t.texels, kFieldParts * t.size, t.size + 1,
+  if (!cpu_order_table) return Real3(0.0);
+  const int w = kMultipleScatteringLutWidth, h = kMultipleScatteringLutHeight;
+  return sample_table(cpu_order_table, kFieldParts * w, h + 1,
                       ground_irradiance_lut_u_from_mu_s(mu_s) / kFieldParts,
-                      (t.size + 0.5) / (t.size + 1));
+                      (h + 0.5) / (h + 1));
 }
 #pragma GCC diagnostic pop
 }  // namespace

@@ -23,12 +23,19 @@
 const int kTransmittanceLutWidth = 256;
 const int kTransmittanceLutHeight = 64;
 const int kTransmittanceSteps = 40;
-const int kMultipleScatteringLutSize = 32;
+// The multiple-scattering LUT: sun zenith (u) by altitude (v). Twilight
+// needs the texels along mu_s: with 32 the sky 5 deg after sunset came out
+// 9 % too bright, with 64 within 2-4 % (the shadow's edge is sharp in mu_s).
+const int kMultipleScatteringLutWidth = 64;
+const int kMultipleScatteringLutHeight = 32;
 // The parts of a multiple-scattering or order table, side by side along u.
 const int kFieldMean = 0;
 const int kFieldMomentUp = 1;
 const int kFieldMomentSun = 2;
-const int kFieldParts = 3;
+const int kFieldQuadrupoleUpUp = 3;
+const int kFieldQuadrupoleSunSun = 4;
+const int kFieldQuadrupoleUpSun = 5;
+const int kFieldParts = 6;
 // Orders of scattering summed explicitly before the geometric tail.
 const int kScatteringOrders = 4;
 // 8 x 8 stratified directions over the sphere (Hillaire 2020, sec. 5.5: 64).
@@ -80,21 +87,21 @@ void transmittance_lut_r_mu_from_uv(IN(Atmosphere) atmosphere, Real u, Real v, O
 void multiple_scattering_lut_uv_from_r_mu_s(IN(Atmosphere) atmosphere, Real r, Real mu_s,
                                             OUT(Real) u, OUT(Real) v) {
   Real x_r = (r - atmosphere.bottom_radius) / (atmosphere.top_radius - atmosphere.bottom_radius);
-  u = lut_coord_from_unit(sky_irradiance_u_from_mu_s(mu_s), kMultipleScatteringLutSize);
-  v = lut_coord_from_unit(clamp(x_r, Real(0.0), Real(1.0)), kMultipleScatteringLutSize);
+  u = lut_coord_from_unit(sky_irradiance_u_from_mu_s(mu_s), kMultipleScatteringLutWidth);
+  v = lut_coord_from_unit(clamp(x_r, Real(0.0), Real(1.0)), kMultipleScatteringLutHeight);
 }
 
 void multiple_scattering_lut_r_mu_s_from_uv(IN(Atmosphere) atmosphere, Real u, Real v,
                                             OUT(Real) r, OUT(Real) mu_s) {
-  Real x_mu_s = clamp(unit_from_lut_coord(u, kMultipleScatteringLutSize), Real(0.0), Real(1.0));
-  Real x_r = clamp(unit_from_lut_coord(v, kMultipleScatteringLutSize), Real(0.0), Real(1.0));
+  Real x_mu_s = clamp(unit_from_lut_coord(u, kMultipleScatteringLutWidth), Real(0.0), Real(1.0));
+  Real x_r = clamp(unit_from_lut_coord(v, kMultipleScatteringLutHeight), Real(0.0), Real(1.0));
   mu_s = mu_s_from_sky_irradiance_u(x_mu_s);
   r = atmosphere.bottom_radius + x_r * (atmosphere.top_radius - atmosphere.bottom_radius);
 }
 
 // The ground-irradiance table: one row over mu_s, the same mapping.
 Real ground_irradiance_lut_u_from_mu_s(Real mu_s) {
-  return lut_coord_from_unit(sky_irradiance_u_from_mu_s(mu_s), kMultipleScatteringLutSize);
+  return lut_coord_from_unit(sky_irradiance_u_from_mu_s(mu_s), kMultipleScatteringLutWidth);
 }
 
 // --- Sky-view LUT (Hillaire 2020, sec. 5.3, extended to the full azimuth) ----
@@ -177,29 +184,81 @@ const int kSourceFirstOrder = 1;
 const int kSourceIsotropicSun = 2;
 const int kSourceNextOrder = 3;
 
-// The light of a field arriving at p, scattered toward a camera that looks
-// along d. The field is its mean radiance J over the sphere (Hillaire's
-// isotropic assumption) and its first moment M, the mean of L(w) w over the
-// directions w looked along, given by its components along the local
-// zenith and the sun's horizontal direction (by symmetry it has no other).
-// Expanding the phase function in Legendre polynomials, the scattered
-// radiance is sigma (J + 3 g_1 M.d) + terms of the field's higher moments,
-// with g_1 the phase function's mean cosine: 0 for Rayleigh, and for
-// Cornette-Shanks 3g (4 + g^2) / (5 (2 + g^2)). The moment keeps the
-// forward glow that thick dust scatters round the sun, which the isotropic
-// mean spreads over the whole sky. Held at zero where the truncated series
-// would go negative.
-Real3 scattered_field(IN(Atmosphere) atmosphere, IN(Real3) mean, IN(Real3) moment_up,
-                      IN(Real3) moment_sun, IN(Real3) sigma_r, IN(Real3) sigma_m, IN(Real3) p,
-                      IN(Real3) d, IN(Real3) sun_dir) {
-  Real3 up = normalize(p);
+// The light of an order (or of all higher orders) arriving at a point, as
+// its first three moments over the sphere of directions w looked along:
+// the mean radiance J, the first moment M = mean of L w, and the traceless
+// second moment T = mean of L (w w^T - I / 3), in the local frame of the
+// zenith (up) and the sun's horizontal direction (sun). By the symmetry
+// about the sun's vertical plane, M has no component across it and T
+// only the components up-up, sun-sun and up-sun (across-across is
+// -(up-up + sun-sun)).
+struct FieldMoments {
+  Real3 mean;
+  Real3 up, sun;
+  Real3 up_up, sun_sun, up_sun;
+};
+
+Real3 field_part(IN(FieldMoments) f, int part) {
+  if (part == kFieldMean) return f.mean;
+  if (part == kFieldMomentUp) return f.up;
+  if (part == kFieldMomentSun) return f.sun;
+  if (part == kFieldQuadrupoleUpUp) return f.up_up;
+  if (part == kFieldQuadrupoleSunSun) return f.sun_sun;
+  return f.up_sun;
+}
+
+Real3 field_lookup(IN(Atmosphere) atmosphere, bool previous_order, Real r, Real mu_s, int part) {
+  return previous_order ? scattering_order_lookup(atmosphere, r, mu_s, part)
+                        : multiple_scattering_lookup(atmosphere, r, mu_s, part);
+}
+
+// The Legendre coefficients g_1, g_2 of Cornette-Shanks (p = sum over l of
+// (2l + 1) / (4 pi) g_l P_l): with (1 + nu^2) = 4/3 + (2/3) P_2 times
+// Henyey-Greenstein's g^l, and P_2 P_l's share of P_2.
+Real cornette_shanks_g1(Real g) {
+  return Real(3.0) * g * (Real(4.0) + g * g) / (Real(5.0) * (Real(2.0) + g * g));
+}
+
+Real cornette_shanks_g2(Real g) {
+  Real g2 = g * g;
+  return Real(1.5) / (Real(2.0) + g2) *
+         (Real(4.0) / Real(3.0) * g2 +
+          Real(2.0) / Real(3.0) * (Real(0.2) + Real(2.0) / Real(7.0) * g2 +
+                                   Real(18.0) / Real(35.0) * g2 * g2));
+}
+
+// The light of a field (the multiple-scattering LUT's, or the previous
+// order's) arriving at p, scattered toward a camera that looks along d.
+// Expanding the phase function in Legendre polynomials, a field's moments
+// scatter as sigma (J + 3 g_1 M.d + 7.5 g_2 d^T T d + ...): Rayleigh has
+// g_1 = 0 and g_2 = 1/10. Hillaire keeps J alone, which spreads the
+// forward glow of thick dust over the whole sky and misses the sky's
+// brightening toward the horizon. Each phase's sum is held at zero where
+// the truncated series would go negative.
+Real3 scattered_field(IN(Atmosphere) atmosphere, bool previous_order, Real r, Real mu_s,
+                      IN(Real3) sigma_r, IN(Real3) sigma_m, IN(Real3) p, IN(Real3) d,
+                      IN(Real3) sun_dir) {
+  Real3 up = p / r;
   Real3 horizontal = sun_dir - up * dot(up, sun_dir);
   Real h = length(horizontal);
+  Real d_up = dot(d, up);
   Real d_sun = h > Real(1e-6) ? dot(d, horizontal) / h : Real(0.0);
+  Real d_across_squared = max(Real(1.0) - d_up * d_up - d_sun * d_sun, Real(0.0));
+  Real3 mean = field_lookup(atmosphere, previous_order, r, mu_s, kFieldMean);
+  Real3 up_up = field_lookup(atmosphere, previous_order, r, mu_s, kFieldQuadrupoleUpUp);
+  Real3 sun_sun = field_lookup(atmosphere, previous_order, r, mu_s, kFieldQuadrupoleSunSun);
+  Real3 quadrupole =
+      up_up * (d_up * d_up - d_across_squared) + sun_sun * (d_sun * d_sun - d_across_squared) +
+      Real(2.0) * d_up * d_sun *
+          field_lookup(atmosphere, previous_order, r, mu_s, kFieldQuadrupoleUpSun);
+  Real3 dipole = field_lookup(atmosphere, previous_order, r, mu_s, kFieldMomentUp) * d_up +
+                 field_lookup(atmosphere, previous_order, r, mu_s, kFieldMomentSun) * d_sun;
   Real g = atmosphere.mie_g;
-  Real g_1 = Real(3.0) * g * (Real(4.0) + g * g) / (Real(5.0) * (Real(2.0) + g * g));
-  Real3 directional = moment_up * dot(d, up) + moment_sun * d_sun;
-  return sigma_r * mean + sigma_m * max(mean + Real(3.0) * g_1 * directional, Real3(0.0));
+  Real3 rayleigh = max(mean + Real(0.75) * quadrupole, Real3(0.0));
+  Real3 mie = max(mean + Real(3.0) * cornette_shanks_g1(g) * dipole +
+                      Real(7.5) * cornette_shanks_g2(g) * quadrupole,
+                  Real3(0.0));
+  return sigma_r * rayleigh + sigma_m * mie;
 }
 
 // One segment [t0, t1] of a ray o + t d, sampled at its middle. The source
@@ -223,10 +282,7 @@ void accumulate_segment(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, Rea
   Real mu_s = clamp_cosine(dot(p, sun_dir) / r);
   Real3 source;
   if (source_kind == kSourceNextOrder) {
-    source = scattered_field(atmosphere, scattering_order_lookup(atmosphere, r, mu_s, kFieldMean),
-                             scattering_order_lookup(atmosphere, r, mu_s, kFieldMomentUp),
-                             scattering_order_lookup(atmosphere, r, mu_s, kFieldMomentSun),
-                             sigma_r, sigma_m, p, d, sun_dir);
+    source = scattered_field(atmosphere, true, r, mu_s, sigma_r, sigma_m, p, d, sun_dir);
   } else {
     Real3 sun = sun_visibility(atmosphere, r, mu_s);
     if (source_kind == kSourceIsotropicSun) {
@@ -234,11 +290,7 @@ void accumulate_segment(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, Rea
     } else {
       source = sun * (sigma_r * phase_r + sigma_m * phase_m);
       if (source_kind == kSourceSky) {
-        source += scattered_field(
-            atmosphere, multiple_scattering_lookup(atmosphere, r, mu_s, kFieldMean),
-            multiple_scattering_lookup(atmosphere, r, mu_s, kFieldMomentUp),
-            multiple_scattering_lookup(atmosphere, r, mu_s, kFieldMomentSun), sigma_r, sigma_m, p,
-            d, sun_dir);
+        source += scattered_field(atmosphere, false, r, mu_s, sigma_r, sigma_m, p, d, sun_dir);
       }
     }
   }
@@ -414,17 +466,20 @@ Real gather_row_cosine(IN(Atmosphere) atmosphere, Real r, int j, int n, bool upp
   return above ? mu_h + span * sm * sm : mu_h - span * sm * sm;
 }
 
-// The mean over the sphere (or the ground's cosine-weighted hemisphere, as
-// irradiance) of the light arriving at (r, mu_s) from `source_kind`, and
-// over the sphere its first moment along the zenith and toward the sun's
-// azimuth (see scattered_field).
-Real3 gather_order(IN(Atmosphere) atmosphere, Real r, Real mu_s, int source_kind,
-                   bool ground_irradiance, OUT(Real3) moment_up, OUT(Real3) moment_sun) {
+// The moments of the light arriving at (r, mu_s) from `source_kind` (see
+// FieldMoments); for the ground (`ground_irradiance`) the mean is instead
+// the irradiance, over the cosine-weighted upper hemisphere.
+FieldMoments gather_order(IN(Atmosphere) atmosphere, Real r, Real mu_s, int source_kind,
+                          bool ground_irradiance) {
   Real3 o = Real3(0.0, 0.0, r);
   Real3 sun_dir = Real3(safe_sqrt(Real(1.0) - mu_s * mu_s), Real(0.0), mu_s);
-  Real3 sum = Real3(0.0);
-  moment_up = Real3(0.0);
-  moment_sun = Real3(0.0);
+  FieldMoments f;
+  f.mean = Real3(0.0);
+  f.up = Real3(0.0);
+  f.sun = Real3(0.0);
+  f.up_up = Real3(0.0);
+  f.sun_sun = Real3(0.0);
+  f.up_sun = Real3(0.0);
   const int n = kMultipleScatteringDirectionsSqrt;
   for (int j = 0; j < n; ++j) {
     Real weight;
@@ -436,18 +491,22 @@ Real3 gather_order(IN(Atmosphere) atmosphere, Real r, Real mu_s, int source_kind
       Real t_end;
       bool hits_ground;
       ray_extent_inside(atmosphere, o, d, t_end, hits_ground);
-      Real3 luminance, transmittance, f;
+      Real3 luminance, transmittance, f_ms;
       integrate_scattering(atmosphere, o, d, Real(0.0), t_end, sun_dir, kMultipleScatteringSteps,
                            source_kind, hits_ground && !ground_irradiance, luminance,
-                           transmittance, f);
-      Real w = weight / Real(n);
-      sum += w * (ground_irradiance ? luminance * d.z : luminance);
-      moment_up += w * luminance * d.z;
-      moment_sun += w * luminance * d.x;
+                           transmittance, f_ms);
+      Real3 l = (weight / Real(n)) * luminance;
+      f.mean += ground_irradiance ? l * d.z : l;
+      f.up += l * d.z;
+      f.sun += l * d.x;
+      f.up_up += l * (d.z * d.z - Real(1.0) / Real(3.0));
+      f.sun_sun += l * (d.x * d.x - Real(1.0) / Real(3.0));
+      f.up_sun += l * (d.x * d.z);
     }
   }
   // Irradiance: int L cos dw over the hemisphere, 2 pi times the mean.
-  return ground_irradiance ? Real(2.0) * kPi * sum : sum;
+  if (ground_irradiance) f.mean *= Real(2.0) * kPi;
+  return f;
 }
 
 // The ground as the irradiance integrals see it: a hair above the bottom

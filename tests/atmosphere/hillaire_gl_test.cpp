@@ -112,20 +112,22 @@ TEST_F(HillaireGLTest, PaperMultipleScatteringLutMatchesCpuIntegral) {
   settings.multiple_scattering = HillaireTechnique::MultipleScattering::kPaper;
   HillaireTechnique* technique = make_renderer(settings);
   render({glm::radians(46.5), glm::radians(8.0), 2.0}, 0.0, 10.0, 30.0, 180.0);
-  const int n = shared::kMultipleScatteringLutSize;
-  // The mean's part; the moment's parts stay zero with the paper's LUT.
-  const int width = shared::kFieldParts * n;
-  auto lut = read_texture(technique->multiple_scattering_lut(), width, n);
+  const int w = shared::kMultipleScatteringLutWidth, h = shared::kMultipleScatteringLutHeight;
+  // The mean's part; the moments' parts stay zero with the paper's LUT.
+  const int width = shared::kFieldParts * w;
+  auto lut = read_texture(technique->multiple_scattering_lut(), width, h);
   for (size_t i = 0; i < lut.size(); i += 4) {
-    if (int(i / 4) % width >= n) ASSERT_EQ(lut[i], 0.0f);
+    if (int(i / 4) % width >= w) {
+      ASSERT_EQ(lut[i], 0.0f);
+    }
   }
   double worst = 0.0;
   // Every third texel in each direction, corners included: the CPU
   // integral in double takes ~10 ms a texel.
-  for (int y = 0; y < n; y += 3) {
-    for (int x = 0; x < n; x += 3) {
+  for (int y = 0; y < h; y += 3) {
+    for (int x = 0; x < w; x += 3) {
       double r, mu_s;
-      shared::multiple_scattering_lut_r_mu_s_from_uv(atmosphere_, (x + 0.5) / n, (y + 0.5) / n,
+      shared::multiple_scattering_lut_r_mu_s_from_uv(atmosphere_, (x + 0.5) / w, (y + 0.5) / h,
                                                      r, mu_s);
       glm::dvec3 cpu = shared::multiple_scattering_texel(atmosphere_, r, mu_s);
       for (int c = 0; c < 3; ++c) {
@@ -145,18 +147,18 @@ TEST_F(HillaireGLTest, PaperMultipleScatteringLutMatchesCpuIntegral) {
   std::printf("paper's multiple-scattering LUT: worst error %.3f of the allowed\n", worst);
 }
 
-// The orders of scattering: each GPU order (mean, moment, ground) against
-// the CPU's integral of the same order from the GPU's previous one (read
-// back, so that an error cannot hide by compounding), and the LUT against
-// their sum.
+// The orders of scattering: each GPU order (its moments and the ground's
+// irradiance) against the CPU's integral of the same order from the GPU's
+// previous one (read back, so that an error cannot hide by compounding),
+// and the LUT against their sum.
 TEST_F(HillaireGLTest, ScatteringOrdersMatchCpuIntegrals) {
   HillaireTechnique* technique = make_renderer();
   render({glm::radians(46.5), glm::radians(8.0), 2.0}, 0.0, 10.0, 30.0, 180.0);
-  const int n = shared::kMultipleScatteringLutSize;
-  const int width = shared::kFieldParts * n;
+  const int w = shared::kMultipleScatteringLutWidth, h = shared::kMultipleScatteringLutHeight;
+  const int width = shared::kFieldParts * w;
   std::vector<std::vector<float>> orders;
   for (int k = 1; k <= shared::kScatteringOrders; ++k) {
-    orders.push_back(read_texture(technique->scattering_order_lut(k), width, n + 1));
+    orders.push_back(read_texture(technique->scattering_order_lut(k), width, h + 1));
   }
   auto texel = [&](const std::vector<float>& table, int x, int y) {
     const float* t = &table[(size_t(y) * size_t(width) + size_t(x)) * 4];
@@ -164,7 +166,7 @@ TEST_F(HillaireGLTest, ScatteringOrdersMatchCpuIntegrals) {
   };
   // Same allowance as the paper's LUT (bilinear transmittance, and here
   // the previous order, on the GPU against exact values on the CPU), on
-  // the scale of the mean for the moment, which can pass through zero.
+  // the scale of the mean for the moments, which can pass through zero.
   auto check = [&](const glm::dvec3& cpu, const glm::dvec3& gpu, const glm::dvec3& scale,
                    const char* what, int k, int x, int y) {
     for (int c = 0; c < 3; ++c) {
@@ -175,30 +177,31 @@ TEST_F(HillaireGLTest, ScatteringOrdersMatchCpuIntegrals) {
   for (int k = 1; k <= shared::kScatteringOrders; ++k) {
     const int source = k == 1 ? shared::kSourceFirstOrder : shared::kSourceNextOrder;
     const std::vector<float>& gpu = orders[size_t(k - 1)];
-    if (k > 1) shared::cpu_order_table = {orders[size_t(k - 2)].data(), n};
-    for (int x = 0; x < n; x += 5) {
+    if (k > 1) shared::cpu_order_table = orders[size_t(k - 2)].data();
+    for (int x = 0; x < w; x += 9) {
       double r, mu_s;
-      glm::dvec3 up, sun;
-      shared::multiple_scattering_lut_r_mu_s_from_uv(atmosphere_, (x + 0.5) / n, 0.5 / n, r, mu_s);
+      shared::multiple_scattering_lut_r_mu_s_from_uv(atmosphere_, (x + 0.5) / w, 0.5 / h, r, mu_s);
       glm::dvec3 e = shared::gather_order(atmosphere_, shared::ground_gather_radius(atmosphere_),
-                                          mu_s, source, true, up, sun);
-      check(e, texel(gpu, x, n), e, "E", k, x, n);
-      for (int y = 0; y < n; y += 5) {
-        shared::multiple_scattering_lut_r_mu_s_from_uv(atmosphere_, (x + 0.5) / n, (y + 0.5) / n,
+                                          mu_s, source, true)
+                         .mean;
+      check(e, texel(gpu, x, h), e, "E", k, x, h);
+      for (int y = 0; y < h; y += 5) {
+        shared::multiple_scattering_lut_r_mu_s_from_uv(atmosphere_, (x + 0.5) / w, (y + 0.5) / h,
                                                        r, mu_s);
-        glm::dvec3 j = shared::gather_order(atmosphere_, r, mu_s, source, false, up, sun);
-        check(j, texel(gpu, x, y), j, "J", k, x, y);
-        check(up, texel(gpu, x + n, y), j, "moment up", k, x, y);
-        check(sun, texel(gpu, x + 2 * n, y), j, "moment toward the sun", k, x, y);
+        shared::FieldMoments f = shared::gather_order(atmosphere_, r, mu_s, source, false);
+        for (int part = 0; part < shared::kFieldParts; ++part) {
+          check(shared::field_part(f, part), texel(gpu, x + part * w, y), f.mean, "part", k, x,
+                y);
+        }
       }
     }
   }
-  shared::cpu_order_table = {};
+  shared::cpu_order_table = nullptr;
   // The LUT is the sum with its tail, texel for texel.
-  auto lut = read_texture(technique->multiple_scattering_lut(), width, n);
-  for (int y = 0; y < n; ++y) {
+  auto lut = read_texture(technique->multiple_scattering_lut(), width, h);
+  for (int y = 0; y < h; ++y) {
     for (int x = 0; x < width; ++x) {
-      int mean_x = x % n;
+      int mean_x = x % w;
       glm::dvec3 all(0.0);
       for (const auto& order : orders) all += texel(order, x, y);
       const size_t last = orders.size() - 1;
@@ -211,8 +214,9 @@ TEST_F(HillaireGLTest, ScatteringOrdersMatchCpuIntegrals) {
   }
   // Later orders are weaker at the sunlit ground: the series converges.
   for (int c = 0; c < 3; ++c) {
-    EXPECT_GT(texel(orders[0], n - 1, 0)[c], texel(orders[1], n - 1, 0)[c]);
-    EXPECT_GT(texel(orders[1], n - 1, 0)[c], texel(orders[2], n - 1, 0)[c]);
+    for (size_t k = 1; k < orders.size(); ++k) {
+      EXPECT_GT(texel(orders[k - 1], w - 1, 0)[c], texel(orders[k], w - 1, 0)[c]);
+    }
   }
 }
 
@@ -240,8 +244,8 @@ TEST_F(HillaireGLTest, NoNanOrInfFromTheGroundToDeepSpaceAndInsideThePlanet) {
           << "transmittance LUT";
       EXPECT_TRUE(all_finite(read_texture(
           technique->multiple_scattering_lut(),
-          shared::kFieldParts * shared::kMultipleScatteringLutSize,
-          shared::kMultipleScatteringLutSize)))
+          shared::kFieldParts * shared::kMultipleScatteringLutWidth,
+          shared::kMultipleScatteringLutHeight)))
           << "multiple-scattering LUT";
       if (technique->lut_weight() > 0.0) {
         EXPECT_TRUE(all_finite(read_texture(technique->sky_view_lut(), shared::kSkyViewLutWidth,

@@ -28,9 +28,10 @@ Real3 transmittance_lookup(IN(Atmosphere) atmosphere, Real r, Real mu) {
 #endif
 
 // A part of a table whose kFieldParts parts stand side by side along u,
-// at (u, v) within the part; `rows` of which the part's n are the first.
+// at (u, v) within the part; `rows` of which the part's
+// kMultipleScatteringLutHeight are the first.
 vec3 sample_part(sampler2D table, float u, float v, int part, int rows) {
-  float n = float(kMultipleScatteringLutSize);
+  float n = float(kMultipleScatteringLutHeight);
   return texture(table, vec2((float(part) + u) / float(kFieldParts), v * n / float(rows))).rgb;
 }
 
@@ -42,11 +43,11 @@ layout(binding = 7) uniform sampler2D u_previous_order;
 Real3 scattering_order_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s, int part) {
   float u, v;
   multiple_scattering_lut_uv_from_r_mu_s(atmosphere, r, mu_s, u, v);
-  return sample_part(u_previous_order, u, v, part, kMultipleScatteringLutSize + 1);
+  return sample_part(u_previous_order, u, v, part, kMultipleScatteringLutHeight + 1);
 }
 
 Real3 ground_order_lookup(IN(Atmosphere) atmosphere, Real mu_s) {
-  float n = float(kMultipleScatteringLutSize);
+  float n = float(kMultipleScatteringLutHeight);
   float u = ground_irradiance_lut_u_from_mu_s(mu_s);
   return texture(u_previous_order, vec2(u / float(kFieldParts), (n + 0.5) / (n + 1.0))).rgb;
 }
@@ -69,6 +70,6 @@ layout(binding = 3) uniform sampler2D u_multiple_scattering_lut;
 Real3 multiple_scattering_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s, int part) {
   float u, v;
   multiple_scattering_lut_uv_from_r_mu_s(atmosphere, r, mu_s, u, v);
-  return sample_part(u_multiple_scattering_lut, u, v, part, kMultipleScatteringLutSize);
+  return sample_part(u_multiple_scattering_lut, u, v, part, kMultipleScatteringLutHeight);
 }
 #endif

@@ -79,9 +79,10 @@ HillaireTechnique::HillaireTechnique(Settings settings)
       transmittance_lut_(make_texture_2d(GL_RGBA32F, shared::kTransmittanceLutWidth,
                                          shared::kTransmittanceLutHeight)),
       multiple_scattering_lut_(make_texture_2d(
-          GL_RGBA32F, shared::kFieldParts * shared::kMultipleScatteringLutSize,
-          shared::kMultipleScatteringLutSize)),
-      ground_irradiance_lut_(make_texture_2d(GL_RGBA32F, shared::kMultipleScatteringLutSize, 1)),
+          GL_RGBA32F, shared::kFieldParts * shared::kMultipleScatteringLutWidth,
+          shared::kMultipleScatteringLutHeight)),
+      ground_irradiance_lut_(
+          make_texture_2d(GL_RGBA32F, shared::kMultipleScatteringLutWidth, 1)),
       sky_view_lut_(
           make_texture_2d(GL_RGBA16F, shared::kSkyViewLutWidth, shared::kSkyViewLutHeight)),
       aerial_scattering_(make_texture_3d(GL_RGBA16F, shared::kAerialPerspectiveSize)),
@@ -89,10 +90,8 @@ HillaireTechnique::HillaireTechnique(Settings settings)
       block_(make_buffer(sizeof(AtmosphereBlock), nullptr)) {
   static_assert(shared::kScatteringOrders == int(std::tuple_size_v<decltype(order_luts_)>),
                 "one table per order of scattering");
-  const int n = shared::kMultipleScatteringLutSize;
-  for (Texture& order : order_luts_) {
-    order = make_texture_2d(GL_RGBA32F, shared::kFieldParts * n, n + 1);
-  }
+  const int w = shared::kMultipleScatteringLutWidth, h = shared::kMultipleScatteringLutHeight;
+  for (Texture& order : order_luts_) order = make_texture_2d(GL_RGBA32F, shared::kFieldParts * w, h + 1);
   // Zero until a frame fills them; with the paper's LUT the ground's sky
   // light and the moment stay zero.
   const float zero[4] = {0, 0, 0, 0};
@@ -127,21 +126,21 @@ void HillaireTechnique::prepare(GpuTimer& timer) {
 
   glBindTextureUnit(2, transmittance_lut_.id());
   timer.begin("multiple_scattering_lut");
-  const int n = shared::kMultipleScatteringLutSize;
+  const int w = shared::kMultipleScatteringLutWidth, h = shared::kMultipleScatteringLutHeight;
   if (settings_.multiple_scattering == MultipleScattering::kPaper) {
     multiple_scattering_program_.use();
     bind_image(0, multiple_scattering_lut_.id(), GL_RGBA32F, false);
-    glDispatchCompute(groups(n), groups(n), 1);
+    glDispatchCompute(groups(w), groups(h), 1);
     glMemoryBarrier(barrier);
   } else {
-    // Each order from the one before: n rows of J_n and its moment, and
-    // one row of E_n.
+    // Each order from the one before: h rows of its moments and one row
+    // of E_n.
     orders_program_.use();
     for (size_t k = 0; k < order_luts_.size(); ++k) {
       glUniform1i(orders_program_.uniform("u_first_order"), k == 0 ? 1 : 0);
       if (k > 0) glBindTextureUnit(7, order_luts_[k - 1].id());
       bind_image(0, order_luts_[k].id(), GL_RGBA32F, false);
-      glDispatchCompute(groups(n), groups(n + 1), 1);
+      glDispatchCompute(groups(w), groups(h + 1), 1);
       glMemoryBarrier(barrier);
     }
     orders_sum_program_.use();
@@ -150,7 +149,7 @@ void HillaireTechnique::prepare(GpuTimer& timer) {
     }
     bind_image(0, multiple_scattering_lut_.id(), GL_RGBA32F, false);
     bind_image(1, ground_irradiance_lut_.id(), GL_RGBA32F, false);
-    glDispatchCompute(groups(n), groups(n + 1), 1);
+    glDispatchCompute(groups(w), groups(h + 1), 1);
     glMemoryBarrier(barrier);
   }
   timer.end();

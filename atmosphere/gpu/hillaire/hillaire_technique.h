@@ -59,11 +59,11 @@ class HillaireTechnique final : public AtmosphereTechnique {
   // The LUTs, for tests and debugging views.
   GLuint transmittance_lut() const { return transmittance_lut_.id(); }
   GLuint multiple_scattering_lut() const { return multiple_scattering_lut_.id(); }
-  // The multiple-scattering LUT is kFieldParts tables of n x n side by side
-  // (mean, moment up, moment toward the sun; n = kMultipleScatteringLutSize).
-  // Order n = 1 ... kScatteringOrders of the last frame: the same parts
-  // over n rows, and E_n in the first n texels of row n; not filled with
-  // the paper's LUT.
+  // The multiple-scattering LUT is kFieldParts tables of w x h side by side
+  // (the moments of FieldMoments; w = kMultipleScatteringLutWidth over mu_s,
+  // h = kMultipleScatteringLutHeight over altitude). Order n = 1 ...
+  // kScatteringOrders of the last frame: the same parts over h rows, and
+  // E_n in the first w texels of row h; not filled with the paper's LUT.
   GLuint scattering_order_lut(int n) const { return order_luts_[size_t(n - 1)].id(); }
   // The sky's irradiance on the ground per unit solar irradiance over the
   // sun's zenith cosine (one row, the multiple-scattering LUT's mu_s

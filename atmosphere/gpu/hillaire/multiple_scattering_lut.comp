@@ -7,10 +7,10 @@ layout(rgba32f, binding = 0) uniform writeonly image2D u_output;
 
 void main() {
   ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
-  if (texel.x >= kMultipleScatteringLutSize || texel.y >= kMultipleScatteringLutSize) return;
+  if (texel.x >= kMultipleScatteringLutWidth || texel.y >= kMultipleScatteringLutHeight) return;
   Atmosphere atmosphere = block_atmosphere();
-  float u = (float(texel.x) + 0.5) / float(kMultipleScatteringLutSize);
-  float v = (float(texel.y) + 0.5) / float(kMultipleScatteringLutSize);
+  float u = (float(texel.x) + 0.5) / float(kMultipleScatteringLutWidth);
+  float v = (float(texel.y) + 0.5) / float(kMultipleScatteringLutHeight);
   float r, mu_s;
   multiple_scattering_lut_r_mu_s_from_uv(atmosphere, u, v, r, mu_s);
   imageStore(u_output, texel, vec4(multiple_scattering_texel(atmosphere, r, mu_s), 1.0));

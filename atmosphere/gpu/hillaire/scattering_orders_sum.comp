@@ -20,13 +20,13 @@ vec3 summed(ivec2 texel, ivec2 mean_texel) {
 
 void main() {
   ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
-  const int n = kMultipleScatteringLutSize;
-  if (texel.x >= n || texel.y > n) return;
-  if (texel.y == n) {
+  const int w = kMultipleScatteringLutWidth, h = kMultipleScatteringLutHeight;
+  if (texel.x >= w || texel.y > h) return;
+  if (texel.y == h) {
     imageStore(u_ground_irradiance, ivec2(texel.x, 0), vec4(summed(texel, texel), 1.0));
   } else {
     for (int part = 0; part < kFieldParts; ++part) {
-      ivec2 t = texel + ivec2(part * n, 0);
+      ivec2 t = texel + ivec2(part * w, 0);
       imageStore(u_multiple_scattering, t, vec4(summed(t, texel), 1.0));
     }
   }
