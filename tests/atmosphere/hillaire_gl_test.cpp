@@ -247,6 +247,16 @@ TEST_F(HillaireGLTest, NoNanOrInfFromTheGroundToDeepSpaceAndInsideThePlanet) {
           shared::kFieldParts * shared::kMultipleScatteringLutWidth,
           shared::kMultipleScatteringLutHeight)))
           << "multiple-scattering LUT";
+      for (int k = 1; k <= shared::kScatteringOrders; ++k) {
+        EXPECT_TRUE(all_finite(read_texture(
+            technique->scattering_order_lut(k),
+            shared::kFieldParts * shared::kMultipleScatteringLutWidth,
+            shared::kMultipleScatteringLutHeight + 1)))
+            << "order " << k;
+      }
+      EXPECT_TRUE(all_finite(read_texture(technique->ground_irradiance_lut(),
+                                          shared::kMultipleScatteringLutWidth, 1)))
+          << "ground's sky irradiance";
       if (technique->lut_weight() > 0.0) {
         EXPECT_TRUE(all_finite(read_texture(technique->sky_view_lut(), shared::kSkyViewLutWidth,
                                             shared::kSkyViewLutHeight)))
