@@ -98,7 +98,7 @@ TEST_P(HillaireAccuracyGLTest, MatchesTheGroundTruth) {
 
 // The orders of scattering against the paper's 1 / (1 - f_ms), where the
 // difference is well above the references' noise. Measured (worst channel):
-// noon 1.30 vs 7.20 %, twilight 6.6 vs 32.6 %, Mars noon 19.8 vs 33.1 %.
+// noon 1.22 vs 7.33 %, twilight 4.7 vs 33.6 %, Mars noon 19.9 vs 33.1 %.
 TEST_F(HillaireAccuracyGLTest, ScatteringOrdersBeatThePapersSeries) {
   for (auto [name, spp] : {std::pair{"earth_noon", 262144}, std::pair{"earth_twilight", 262144},
                            std::pair{"mars_noon", 131072}}) {
@@ -115,14 +115,14 @@ TEST_F(HillaireAccuracyGLTest, ScatteringOrdersBeatThePapersSeries) {
 }
 
 INSTANTIATE_TEST_SUITE_P(CanonicalScenes, HillaireAccuracyGLTest,
-                         // Today's errors + 20 %: a regression guard (the goals
-                         // of 2 and 5 % are not all met, see the README).
-                         ::testing::Values(AccuracyCase{"earth_noon", 262144, 0.016},
-                                           AccuracyCase{"earth_400km", 65536, 0.017},
-                                           AccuracyCase{"earth_sunset", 262144, 0.054},
-                                           AccuracyCase{"earth_twilight", 262144, 0.080},
+                         // Today's errors + 20 %: a regression guard (Mars misses
+                         // its goal of 5 % by far, see the README).
+                         ::testing::Values(AccuracyCase{"earth_noon", 262144, 0.015},
+                                           AccuracyCase{"earth_400km", 65536, 0.016},
+                                           AccuracyCase{"earth_sunset", 262144, 0.055},
+                                           AccuracyCase{"earth_twilight", 262144, 0.057},
                                            AccuracyCase{"mars_noon", 131072, 0.238},
-                                           AccuracyCase{"mars_sunset", 65536, 0.62}),
+                                           AccuracyCase{"mars_sunset", 65536, 0.61}),
                          [](const auto& test_info) { return std::string(test_info.param.scene); });
 
 // Every canonical scene with an atmosphere, dense and strongly forward
