@@ -11,9 +11,10 @@ namespace planet::shared {
 #define INOUT(T) T&
 
 // The lookups the shared integrals call. On the CPU the transmittance is
-// integrated directly (kTransmittanceSteps trapezoids, what the GPU's LUT
-// stores at its texels); higher orders are left out, so the CPU evaluates
-// the multiple-scattering pass itself, which needs none.
+// integrated directly (kTransmittanceSteps samples, what the GPU's LUT
+// stores at its texels); the multiple-scattering LUT reads zero, so the CPU
+// evaluates the LUT passes themselves, and an order of scattering reads the
+// previous one from cpu_order_table.
 // Internal linkage, as in shared_math.h.
 namespace {
 #pragma GCC diagnostic push

@@ -391,12 +391,10 @@ void ray_extent_inside(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, OUT(
 // (eq. 9). Per unit solar irradiance. The ground reflects the sun with its
 // albedo.
 //
-// Stratified uniform directions: phi uniform, cos(theta) uniform over the
-// sphere (or, for the ground's hemisphere, over [0, 1]).
-Real3 sphere_direction(int i, int j, int n, bool upper_half) {
+// The direction at zenith cosine cos_theta in column i of n, whose azimuths
+// phi are stratified uniformly.
+Real3 gather_direction(Real cos_theta, int i, int n) {
   Real phi = Real(2.0) * kPi * (Real(i) + Real(0.5)) / Real(n);
-  Real cos_theta = upper_half ? Real(1.0) - (Real(j) + Real(0.5)) / Real(n)
-                              : Real(1.0) - Real(2.0) * (Real(j) + Real(0.5)) / Real(n);
   Real sin_theta = safe_sqrt(Real(1.0) - cos_theta * cos_theta);
   return Real3(sin_theta * cos(phi), sin_theta * sin(phi), cos_theta);
 }
@@ -409,7 +407,8 @@ Real3 multiple_scattering_texel(IN(Atmosphere) atmosphere, Real r, Real mu_s) {
   const int n = kMultipleScatteringDirectionsSqrt;
   for (int i = 0; i < n; ++i) {
     for (int j = 0; j < n; ++j) {
-      Real3 d = sphere_direction(i, j, n, false);
+      // The paper's rows: cos(theta) stratified uniformly over the sphere.
+      Real3 d = gather_direction(Real(1.0) - Real(2.0) * (Real(j) + Real(0.5)) / Real(n), i, n);
       Real t_end;
       bool hits_ground;
       ray_extent_inside(atmosphere, o, d, t_end, hits_ground);
@@ -487,10 +486,8 @@ FieldMoments gather_order(IN(Atmosphere) atmosphere, Real r, Real mu_s, int sour
   for (int j = 0; j < n; ++j) {
     Real weight;
     Real cos_theta = gather_row_cosine(atmosphere, r, j, n, ground_irradiance, weight);
-    Real sin_theta = safe_sqrt(Real(1.0) - cos_theta * cos_theta);
     for (int i = 0; i < n; ++i) {
-      Real phi = Real(2.0) * kPi * (Real(i) + Real(0.5)) / Real(n);
-      Real3 d = Real3(sin_theta * cos(phi), sin_theta * sin(phi), cos_theta);
+      Real3 d = gather_direction(cos_theta, i, n);
       Real t_end;
       bool hits_ground;
       ray_extent_inside(atmosphere, o, d, t_end, hits_ground);
@@ -514,7 +511,9 @@ FieldMoments gather_order(IN(Atmosphere) atmosphere, Real r, Real mu_s, int sour
 
 // The ground as the irradiance integrals see it: a hair above the bottom
 // sphere, so that the horizontal directions do not start inside it.
-Real ground_gather_radius(IN(Atmosphere) atmosphere) { return atmosphere.bottom_radius + Real(1.0); }
+Real ground_gather_radius(IN(Atmosphere) atmosphere) {
+  return atmosphere.bottom_radius + Real(1.0);
+}
 
 // The sum x_sum of orders 1 to N and the geometric tail of the orders
 // beyond, x_N q / (1 - q), whose ratio q is that of the last two orders'

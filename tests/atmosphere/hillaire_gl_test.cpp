@@ -211,9 +211,9 @@ TEST_F(HillaireGLTest, ScatteringOrdersMatchCpuIntegrals) {
       glm::dvec3 all(0.0);
       for (const auto& order : orders) all += texel(order, x, y);
       const size_t last = orders.size() - 1;
-      glm::dvec3 sum =
-          shared::with_geometric_tail(texel(orders[last - 1], mean_x, y),
-                                      texel(orders[last], mean_x, y), all, texel(orders[last], x, y));
+      glm::dvec3 sum = shared::with_geometric_tail(texel(orders[last - 1], mean_x, y),
+                                                   texel(orders[last], mean_x, y), all,
+                                                   texel(orders[last], x, y));
       glm::dvec3 got = texel(lut, x, y);
       for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], sum[c], 1e-5 * std::abs(sum[c]) + 1e-12);
     }

@@ -91,9 +91,11 @@ HillaireTechnique::HillaireTechnique(Settings settings)
   static_assert(shared::kScatteringOrders == int(std::tuple_size_v<decltype(order_luts_)>),
                 "one table per order of scattering");
   const int w = shared::kMultipleScatteringLutWidth, h = shared::kMultipleScatteringLutHeight;
-  for (Texture& order : order_luts_) order = make_texture_2d(GL_RGBA32F, shared::kFieldParts * w, h + 1);
+  for (Texture& order : order_luts_) {
+    order = make_texture_2d(GL_RGBA32F, shared::kFieldParts * w, h + 1);
+  }
   // Zero until a frame fills them; with the paper's LUT the ground's sky
-  // light and the moment stay zero.
+  // light and the moments stay zero.
   const float zero[4] = {0, 0, 0, 0};
   glClearTexImage(ground_irradiance_lut_.id(), 0, GL_RGBA, GL_FLOAT, zero);
   glClearTexImage(multiple_scattering_lut_.id(), 0, GL_RGBA, GL_FLOAT, zero);
