@@ -47,6 +47,7 @@ Real3 sample_table(const float* table, int width, int height, Real u, Real v) {
 
 Real3 scattering_order_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s, int part);
 Real3 ground_order_lookup(IN(Atmosphere) atmosphere, Real mu_s);
+Real forward_gain_lookup(IN(Atmosphere) atmosphere, Real nu, Real tau);
 
 #include "atmosphere/shaders/hillaire_functions.glsl"
 
@@ -63,8 +64,11 @@ Real3 ground_order_lookup(IN(Atmosphere), Real mu_s) {
   if (!cpu_order_table) return Real3(0.0);
   const int w = kMultipleScatteringLutWidth, h = kMultipleScatteringLutHeight;
   return sample_table(cpu_order_table, kFieldParts * w, h + 1,
-                      ground_irradiance_lut_u_from_mu_s(mu_s) / kFieldParts,
-                      (h + 0.5) / (h + 1));
+                      ground_irradiance_lut_u_from_mu_s(mu_s) / kFieldParts, (h + 0.5) / (h + 1));
+}
+// The forward gain summed directly, as the GPU's LUT holds it at its texels.
+Real forward_gain_lookup(IN(Atmosphere) atmosphere, Real nu, Real tau) {
+  return forward_gain_times_extinction(atmosphere.mie_g, nu, tau);
 }
 #pragma GCC diagnostic pop
 }  // namespace

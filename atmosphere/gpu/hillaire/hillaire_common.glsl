@@ -9,6 +9,7 @@ Real3 transmittance_lookup(IN(Atmosphere) atmosphere, Real r, Real mu);
 Real3 multiple_scattering_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s, int part);
 Real3 scattering_order_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s, int part);
 Real3 ground_order_lookup(IN(Atmosphere) atmosphere, Real mu_s);
+Real forward_gain_lookup(IN(Atmosphere) atmosphere, Real nu, Real tau);
 
 #include "atmosphere/shaders/hillaire_functions.glsl"
 
@@ -72,4 +73,18 @@ Real3 multiple_scattering_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s, i
   multiple_scattering_lut_uv_from_r_mu_s(atmosphere, r, mu_s, u, v);
   return sample_part(u_multiple_scattering_lut, u, v, part, kMultipleScatteringLutHeight);
 }
+#endif
+
+#ifdef FORWARD_GAIN_LUT
+// exp(-tau) forward_gain over (nu, tau) (forward_gain_lut.comp).
+layout(binding = 8) uniform sampler2D u_forward_gain_lut;
+
+Real forward_gain_lookup(IN(Atmosphere) atmosphere, Real nu, Real tau) {
+  float u, v;
+  forward_gain_lut_uv_from_nu_tau(nu, tau, u, v);
+  return texture(u_forward_gain_lut, vec2(u, v)).r;
+}
+#else
+// Passes that draw no view (the LUT passes), and the paper's form.
+Real forward_gain_lookup(IN(Atmosphere) atmosphere, Real nu, Real tau) { return 0.0; }
 #endif

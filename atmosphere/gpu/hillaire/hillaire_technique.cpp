@@ -56,6 +56,17 @@ void bind_image(GLuint unit, GLuint texture, GLenum format, bool layered) {
   glBindImageTexture(unit, texture, 0, layered ? GL_TRUE : GL_FALSE, 0, GL_WRITE_ONLY, format);
 }
 
+// The passes that draw the view take the forward gain from its LUT; the
+// paper's form goes without, as the paper has it.
+std::vector<std::string> view_defines(const HillaireTechnique::Settings& settings,
+                                      std::string define) {
+  std::vector<std::string> defines = {std::move(define)};
+  if (settings.multiple_scattering == HillaireTechnique::MultipleScattering::kOrders) {
+    defines.push_back("FORWARD_GAIN_LUT 1");
+  }
+  return defines;
+}
+
 }  // namespace
 
 HillaireTechnique::HillaireTechnique(Settings settings)
@@ -68,21 +79,24 @@ HillaireTechnique::HillaireTechnique(Settings settings)
                                        {"SCATTERING_ORDERS_PASS 1"})),
       orders_sum_program_(Program::compute("atmosphere/gpu/hillaire/scattering_orders_sum.comp",
                                            {"SCATTERING_ORDERS_PASS 1"})),
-      sky_view_program_(Program::compute("atmosphere/gpu/hillaire/sky_view_lut.comp",
-                                         {fmt::format("SKY_VIEW_STEPS {}", settings.sky_view_steps)})),
-      aerial_program_(
-          Program::compute("atmosphere/gpu/hillaire/aerial_perspective.comp",
-                           {fmt::format("AERIAL_SUBSTEPS {}", settings.aerial_substeps)})),
-      sky_program_(Program::graphics("render/shaders/fullscreen.vert",
-                                     "atmosphere/gpu/hillaire/hillaire_sky.frag",
-                                     {fmt::format("PER_PIXEL_STEPS {}", settings.per_pixel_steps)})),
+      forward_gain_program_(Program::compute("atmosphere/gpu/hillaire/forward_gain_lut.comp")),
+      sky_view_program_(Program::compute(
+          "atmosphere/gpu/hillaire/sky_view_lut.comp",
+          view_defines(settings, fmt::format("SKY_VIEW_STEPS {}", settings.sky_view_steps)))),
+      aerial_program_(Program::compute(
+          "atmosphere/gpu/hillaire/aerial_perspective.comp",
+          view_defines(settings, fmt::format("AERIAL_SUBSTEPS {}", settings.aerial_substeps)))),
+      sky_program_(Program::graphics(
+          "render/shaders/fullscreen.vert", "atmosphere/gpu/hillaire/hillaire_sky.frag",
+          view_defines(settings, fmt::format("PER_PIXEL_STEPS {}", settings.per_pixel_steps)))),
       transmittance_lut_(make_texture_2d(GL_RGBA32F, shared::kTransmittanceLutWidth,
                                          shared::kTransmittanceLutHeight)),
-      multiple_scattering_lut_(make_texture_2d(
-          GL_RGBA32F, shared::kFieldParts * shared::kMultipleScatteringLutWidth,
-          shared::kMultipleScatteringLutHeight)),
-      ground_irradiance_lut_(
-          make_texture_2d(GL_RGBA32F, shared::kMultipleScatteringLutWidth, 1)),
+      multiple_scattering_lut_(
+          make_texture_2d(GL_RGBA32F, shared::kFieldParts * shared::kMultipleScatteringLutWidth,
+                          shared::kMultipleScatteringLutHeight)),
+      ground_irradiance_lut_(make_texture_2d(GL_RGBA32F, shared::kMultipleScatteringLutWidth, 1)),
+      forward_gain_lut_(
+          make_texture_2d(GL_R32F, shared::kForwardGainLutWidth, shared::kForwardGainLutHeight)),
       sky_view_lut_(
           make_texture_2d(GL_RGBA16F, shared::kSkyViewLutWidth, shared::kSkyViewLutHeight)),
       aerial_scattering_(make_texture_3d(GL_RGBA16F, shared::kAerialPerspectiveSize)),
@@ -155,6 +169,16 @@ void HillaireTechnique::prepare(GpuTimer& timer) {
     glMemoryBarrier(barrier);
   }
   timer.end();
+
+  if (settings_.multiple_scattering == MultipleScattering::kOrders) {
+    timer.begin("forward_gain_lut");
+    forward_gain_program_.use();
+    bind_image(0, forward_gain_lut_.id(), GL_R32F, false);
+    glDispatchCompute(groups(shared::kForwardGainLutWidth), groups(shared::kForwardGainLutHeight),
+                      1);
+    glMemoryBarrier(barrier);
+    timer.end();
+  }
   prepared_ = true;
 }
 
@@ -164,8 +188,12 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   const double altitude = r - bottom;
   const double thickness = top - bottom;
   switch (settings_.path) {
-    case Path::kLuts: lut_weight_ = 1.0; break;
-    case Path::kPerPixel: lut_weight_ = 0.0; break;
+    case Path::kLuts:
+      lut_weight_ = 1.0;
+      break;
+    case Path::kPerPixel:
+      lut_weight_ = 0.0;
+      break;
     case Path::kByAltitude:
       lut_weight_ = 1.0 - smoothstep(settings_.switch_start * thickness,
                                      settings_.switch_end * thickness, altitude);
@@ -187,6 +215,7 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, block_.id());
   glBindTextureUnit(2, transmittance_lut_.id());
   glBindTextureUnit(3, multiple_scattering_lut_.id());
+  glBindTextureUnit(8, forward_gain_lut_.id());
   const GLbitfield barrier = GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT;
 
   // No sky-view LUT and no froxels where the per-pixel path draws alone

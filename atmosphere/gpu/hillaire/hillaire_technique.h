@@ -7,7 +7,9 @@
 // up and in space). The multiple-scattering LUT sums the orders of
 // scattering one by one on the paper's 2D table (technique "hillaire"), or
 // takes the paper's Psi_ms = L_2 / (1 - f_ms) (technique "hillaire2020");
-// see hillaire_functions.glsl for why.
+// the first also carries the sun's light scattered on straight ahead by
+// the air before the camera (a forward-gain LUT). See
+// hillaire_functions.glsl for why.
 #include "atmosphere/gpu/technique.h"
 #include "render/gl/program.h"
 #include "render/gl/texture.h"
@@ -26,7 +28,7 @@ class HillaireTechnique final : public AtmosphereTechnique {
     MultipleScattering multiple_scattering = MultipleScattering::kOrders;
     int sky_view_steps = 30;
     int per_pixel_steps = 40;
-    int aerial_substeps = 2;  // per froxel slice
+    int aerial_substeps = 2;     // per froxel slice
     double aerial_range = 32e3;  // metres, near the ground
     // The per-pixel path takes over between these altitudes, as fractions
     // of the atmosphere's thickness (60 and 80 km on Earth).
@@ -69,6 +71,9 @@ class HillaireTechnique final : public AtmosphereTechnique {
   // sun's zenith cosine (one row, the multiple-scattering LUT's mu_s
   // mapping); zero with the paper's LUT, which has no such sum.
   GLuint ground_irradiance_lut() const { return ground_irradiance_lut_.id(); }
+  // exp(-tau) forward_gain over (nu, tau) (hillaire_functions.glsl), for
+  // the model's Mie g; not filled with the paper's LUT.
+  GLuint forward_gain_lut() const { return forward_gain_lut_.id(); }
   GLuint sky_view_lut() const { return sky_view_lut_.id(); }
   GLuint aerial_scattering() const { return aerial_scattering_.id(); }
   GLuint aerial_transmittance() const { return aerial_transmittance_.id(); }
@@ -77,9 +82,9 @@ class HillaireTechnique final : public AtmosphereTechnique {
   Settings settings_;
   AtmosphereModel model_;
   Program transmittance_program_, multiple_scattering_program_, orders_program_,
-      orders_sum_program_, sky_view_program_, aerial_program_, sky_program_;
-  Texture transmittance_lut_, multiple_scattering_lut_, ground_irradiance_lut_, sky_view_lut_,
-      aerial_scattering_, aerial_transmittance_;
+      orders_sum_program_, forward_gain_program_, sky_view_program_, aerial_program_, sky_program_;
+  Texture transmittance_lut_, multiple_scattering_lut_, ground_irradiance_lut_, forward_gain_lut_,
+      sky_view_lut_, aerial_scattering_, aerial_transmittance_;
   std::array<Texture, 4> order_luts_;  // kScatteringOrders
   Buffer block_;
   VertexArray empty_vao_;

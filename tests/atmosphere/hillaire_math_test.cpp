@@ -1,0 +1,125 @@
+// The Legendre series of Cornette-Shanks and the forward gain
+// (atmosphere/shaders/hillaire_functions.glsl, compiled as C++), against
+// direct integration and against light scattered at random.
+#include "atmosphere/hillaire_math.h"
+#include "atmosphere/reference/sampling.h"
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <vector>
+
+namespace planet {
+namespace {
+
+double legendre(int l, double nu) {
+  double before = 1.0, p = nu;
+  if (l == 0) return before;
+  for (int k = 2; k <= l; ++k) {
+    double next = ((2 * k - 1) * nu * p - (k - 1) * before) / k;
+    before = p;
+    p = next;
+  }
+  return p;
+}
+
+// g_l = 2 pi int p(nu) P_l(nu) dnu, by the midpoint rule.
+double legendre_coefficient(double g, int l) {
+  const int n = 400000;
+  double sum = 0.0;
+  for (int i = 0; i < n; ++i) {
+    double nu = -1.0 + 2.0 * (i + 0.5) / n;
+    sum += shared::cornette_shanks_phase(g, nu) * legendre(l, nu);
+  }
+  return 2.0 * shared::kPi * sum * 2.0 / n;
+}
+
+TEST(HillaireMathTest, CornetteShanksLegendreCoefficientsMatchTheIntegral) {
+  for (double g : {0.0, 0.5, 0.75, 0.8, -0.3}) {
+    for (int l = 0; l <= 8; ++l) {
+      EXPECT_NEAR(shared::cornette_shanks_legendre(g, l), legendre_coefficient(g, l), 2e-6)
+          << "g " << g << " l " << l;
+    }
+  }
+}
+
+// The angular distribution, over the cosine nu to the sun, of sunlight
+// scattered once (true phase) and then a Poisson number of times more over
+// Mie scattering depth tau, all within a homogeneous medium that keeps
+// every photon: by Funk-Hecke, term l of it is (2l + 1) / (4 pi) g_l
+// exp((g_l - 1) tau). The forward gain is its part from l = 3 beyond what
+// single scattering gives, so the whole distribution is
+//   exp(-tau) p + exp(-tau) forward_gain + the terms l <= 2 of the rest.
+double spread_distribution(double g, double nu, double tau) {
+  double low = 0.0;
+  for (int l = 0; l <= 2; ++l) {
+    double g_l = shared::cornette_shanks_legendre(g, l);
+    low += (2 * l + 1) / (4.0 * shared::kPi) * g_l *
+           (std::exp((g_l - 1.0) * tau) - std::exp(-tau)) * legendre(l, nu);
+  }
+  return std::exp(-tau) * shared::cornette_shanks_phase(g, nu) +
+         shared::forward_gain_times_extinction(g, nu, tau) + low;
+}
+
+TEST(HillaireMathTest, ForwardGainMatchesLightScatteredAtRandom) {
+  using reference::Rng;
+  for (double g : {0.75, 0.8}) {
+    for (double tau : {0.5, 2.0}) {
+      // Bins of equal width in sin(theta / 2), the LUT's mapping.
+      const int bins = 16;
+      const int photons = 400000;
+      std::vector<double> counts(bins, 0.0);
+      Rng rng(uint64_t(1000 * g + 10 * tau));
+      const glm::dvec3 sun(0, 0, 1);
+      for (int i = 0; i < photons; ++i) {
+        glm::dvec3 d = reference::direction_about(
+            sun, reference::sample_cornette_shanks_mu(g, rng), 2.0 * shared::kPi * rng.uniform());
+        for (double t = -std::log(1.0 - rng.uniform()); t < tau;
+             t -= std::log(1.0 - rng.uniform())) {
+          d = reference::direction_about(d, reference::sample_cornette_shanks_mu(g, rng),
+                                         2.0 * shared::kPi * rng.uniform());
+        }
+        double s = std::sqrt(std::max(0.5 * (1.0 - glm::dot(d, sun)), 0.0));
+        counts[size_t(std::min(int(s * bins), bins - 1))] += 1.0;
+      }
+      for (int b = 0; b < bins; ++b) {
+        // The bin's probability: 2 pi int f dnu over nu = 1 - 2 s^2.
+        const int n = 400;
+        double expected = 0.0;
+        for (int k = 0; k < n; ++k) {
+          double s = (b + (k + 0.5) / n) / bins;
+          double dnu = 4.0 * s / (bins * n);
+          expected += 2.0 * shared::kPi * spread_distribution(g, 1.0 - 2.0 * s * s, tau) * dnu;
+        }
+        double measured = counts[size_t(b)] / photons;
+        double sigma = std::sqrt(expected * (1.0 - expected) / photons);
+        EXPECT_NEAR(measured, expected, 4.0 * sigma + 1e-5)
+            << "g " << g << " tau " << tau << " bin " << b;
+      }
+    }
+  }
+}
+
+TEST(HillaireMathTest, ForwardGainMovesLightWithoutMakingIt) {
+  for (double g : {0.75, 0.8}) {
+    EXPECT_EQ(shared::forward_gain_times_extinction(g, 0.3, 0.0), 0.0);
+    for (double tau : {0.1, 1.0, 10.0}) {
+      // No light made or lost: the gain integrates to zero over the sphere.
+      const int n = 200000;
+      double total = 0.0, magnitude = 0.0;
+      for (int i = 0; i < n; ++i) {
+        double nu = -1.0 + 2.0 * (i + 0.5) / n;
+        double gain = shared::forward_gain_times_extinction(g, nu, tau);
+        total += gain;
+        magnitude += std::abs(gain);
+      }
+      EXPECT_LT(std::abs(total), 1e-6 * magnitude) << "g " << g << " tau " << tau;
+      // Light is moved toward the sun.
+      EXPECT_GT(shared::forward_gain_times_extinction(g, 1.0, tau), 0.0);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace planet
