@@ -233,8 +233,8 @@ Real3 field_lookup(IN(Atmosphere) atmosphere, bool previous_order, Real r, Real 
 //   c = 3 l (l-1) / (2 (2l-1)(2l+1)),
 // so that the term l of P_2 times Henyey-Greenstein is
 // a g^(l+2) + b g^l + c g^(l-2). g_0 = 1; g_1 = 3 g (4 + g^2) / (5 (2 + g^2)).
-// For l >= 2, given g^(l-2) (formed by products: g may be zero or
-// negative).
+// cornette_shanks_term gives g_l for l >= 2 from g^(l-2), formed by
+// products (g may be zero or negative), so that a series can carry it.
 Real cornette_shanks_term(Real g, int l, Real g_l_minus_2) {
   Real x = Real(l);
   Real a = Real(3.0) * (x + Real(1.0)) * (x + Real(2.0)) /
