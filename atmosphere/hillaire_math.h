@@ -48,6 +48,7 @@ Real3 sample_table(const float* table, int width, int height, Real u, Real v) {
 Real3 scattering_order_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s, int part);
 Real3 ground_order_lookup(IN(Atmosphere) atmosphere, Real mu_s);
 Real forward_gain_lookup(IN(Atmosphere) atmosphere, Real nu, Real tau);
+Real mie_column_lookup(IN(Atmosphere) atmosphere, Real r, Real mu);
 
 #include "atmosphere/shaders/hillaire_functions.glsl"
 
@@ -66,6 +67,10 @@ Real3 ground_order_lookup(IN(Atmosphere), Real mu_s) {
   return sample_table(cpu_order_table, kFieldParts * w, h + 1,
                       ground_irradiance_lut_u_from_mu_s(mu_s) / kFieldParts, (h + 0.5) / (h + 1));
 }
+Real mie_column_lookup(IN(Atmosphere) atmosphere, Real r, Real mu) {
+  return mie_column_to_top(atmosphere, r, mu, 40);
+}
+
 // The forward gain summed directly, as the GPU's LUT holds it at its texels.
 Real forward_gain_lookup(IN(Atmosphere) atmosphere, Real nu, Real tau) {
   return forward_gain_times_extinction(atmosphere.mie_g, nu, tau);

@@ -30,7 +30,7 @@ void main() {
   float nu = dot(dir, u_sun_dir);
   float phase_r = rayleigh_phase(nu);
   float phase_m = cornette_shanks_phase(atmosphere.mie_g, nu);
-  vec3 luminance = vec3(0.0), throughput = vec3(1.0), mie_depth = vec3(0.0), f_ms = vec3(0.0);
+  vec3 luminance = vec3(0.0), throughput = vec3(1.0), f_ms = vec3(0.0);
   float t_previous = 0.0;
   for (int k = 0; k < kAerialPerspectiveSize; ++k) {
     float w = (float(k) + 0.5) / float(kAerialPerspectiveSize);
@@ -40,7 +40,7 @@ void main() {
       float t0 = mix(t_previous, t_slice, float(s) / float(AERIAL_SUBSTEPS));
       float t1 = mix(t_previous, t_slice, float(s + 1) / float(AERIAL_SUBSTEPS));
       accumulate_segment(atmosphere, u_camera, dir, t0, t1, u_sun_dir, phase_r, phase_m,
-                         kSourceSky, luminance, throughput, mie_depth, f_ms);
+                         kSourceSky, luminance, throughput, f_ms);
     }
     t_previous = t_slice;
     ivec3 froxel = ivec3(column, k);

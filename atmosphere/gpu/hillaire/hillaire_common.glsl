@@ -6,6 +6,7 @@
 #define INOUT(T) inout T
 
 Real3 transmittance_lookup(IN(Atmosphere) atmosphere, Real r, Real mu);
+Real mie_column_lookup(IN(Atmosphere) atmosphere, Real r, Real mu);
 Real3 multiple_scattering_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s, int part);
 Real3 scattering_order_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s, int part);
 Real3 ground_order_lookup(IN(Atmosphere) atmosphere, Real mu_s);
@@ -18,13 +19,25 @@ Real forward_gain_lookup(IN(Atmosphere) atmosphere, Real nu, Real tau);
 Real3 transmittance_lookup(IN(Atmosphere) atmosphere, Real r, Real mu) {
   return transmittance_to_top(atmosphere, r, mu, kTransmittanceSteps);
 }
+Real mie_column_lookup(IN(Atmosphere) atmosphere, Real r, Real mu) {
+  return mie_column_to_top(atmosphere, r, mu, kTransmittanceSteps);
+}
 #else
+// RGB: the transmittance; alpha: the Mie column (transmittance_lut.comp).
 layout(binding = 2) uniform sampler2D u_transmittance_lut;
 
-Real3 transmittance_lookup(IN(Atmosphere) atmosphere, Real r, Real mu) {
+vec4 transmittance_texel(IN(Atmosphere) atmosphere, Real r, Real mu) {
   float u, v;
   transmittance_lut_uv_from_r_mu(atmosphere, r, mu, u, v);
-  return texture(u_transmittance_lut, vec2(u, v)).rgb;
+  return texture(u_transmittance_lut, vec2(u, v));
+}
+
+Real3 transmittance_lookup(IN(Atmosphere) atmosphere, Real r, Real mu) {
+  return transmittance_texel(atmosphere, r, mu).rgb;
+}
+
+Real mie_column_lookup(IN(Atmosphere) atmosphere, Real r, Real mu) {
+  return transmittance_texel(atmosphere, r, mu).a;
 }
 #endif
 

@@ -7,9 +7,9 @@
 // up and in space). The multiple-scattering LUT sums the orders of
 // scattering one by one on the paper's 2D table (technique "hillaire"), or
 // takes the paper's Psi_ms = L_2 / (1 - f_ms) (technique "hillaire2020");
-// the first also carries the sun's light scattered on straight ahead by
-// the air before the camera (a forward-gain LUT). See
-// hillaire_functions.glsl for why.
+// the first also carries the glow of sunlight that the air scatters
+// forward along the sun's path, past the table's second moment (a
+// forward-gain LUT). See hillaire_functions.glsl for why.
 #include "atmosphere/gpu/technique.h"
 #include "render/gl/program.h"
 #include "render/gl/texture.h"

@@ -1,5 +1,7 @@
 // Hillaire 2020, sec. 5.1: transmittance to the top of the atmosphere over
-// (r, mu) in Bruneton's mapping, kTransmittanceSteps trapezoids per texel.
+// (r, mu) in Bruneton's mapping, kTransmittanceSteps trapezoids per texel;
+// alpha holds the Mie density's column over the same path, for the
+// forward gain (hillaire_functions.glsl).
 #include "atmosphere/gpu/hillaire/hillaire_common.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -14,5 +16,6 @@ void main() {
   float r, mu;
   transmittance_lut_r_mu_from_uv(atmosphere, u, v, r, mu);
   vec3 transmittance = transmittance_to_top(atmosphere, r, mu, kTransmittanceSteps);
-  imageStore(u_output, texel, vec4(transmittance, 1.0));
+  float mie_column = mie_column_to_top(atmosphere, r, mu, kTransmittanceSteps);
+  imageStore(u_output, texel, vec4(transmittance, mie_column));
 }
