@@ -315,6 +315,38 @@ TEST_F(HillaireGLTest, NoNanOrInfFromTheGroundToDeepSpaceAndInsideThePlanet) {
 
 // The planet's shadow: with the sun 30 degrees below the horizon of the
 // point below, the night side seen from 400 km is dark, air and ground.
+// On Mars's northern lowlands the camera stands below the bottom sphere,
+// and the sky pass lifts it onto it. A ray that clears the terrain's
+// horizon must see the sky beyond, not the lifted sphere's ground just
+// below its horizon: that drew a band along the horizon, 4x darker in red
+// than both the sky above and the terrain below (red 0.005 against 0.017
+// at the darkest elsewhere). The view is data/flights/terrain_mars.json's
+// first frame, 2 m above the ground and 748 m below the reference surface.
+TEST(HillaireLowlandsGLTest, NoDarkBandWhereTheTerrainLiesBelowTheBottomSphere) {
+  setenv("PLANET_GL_DEBUG", "1", 1);
+  auto context = GlContext::create_headless();
+  Body body = load_body(data_dir() / "planets" / "mars.json");
+  AtmosphereModel model =
+      parse_atmosphere(JsonObject(body.atmosphere, body.file.string(), "atmosphere"));
+  const int width = 240, height = 135;
+  FrameRenderer renderer(width, height);
+  renderer.set_body(body, model, std::make_unique<HillaireTechnique>());
+  auto view = view_from_place(body.shape, {glm::radians(18.65), glm::radians(-134.8), -747.912},
+                              200.0, 4.0, 60.0, 30.0, 120.0);
+  renderer.render(view.camera, view.sun_dir_body, 6.0);
+  std::vector<float> hdr = renderer.read_hdr();
+  float darkest = 1e30f;
+  int at = 0;
+  for (int i = 0; i < width * height; ++i) {
+    if (hdr[size_t(i) * 4] < darkest) {
+      darkest = hdr[size_t(i) * 4];
+      at = i;
+    }
+  }
+  EXPECT_GT(darkest, 0.012f) << "pixel " << at % width << ", " << at / width
+                             << " (rows bottom-up)";
+}
+
 TEST_F(HillaireGLTest, NightSideIsDarkFromOrbit) {
   make_renderer();
   auto hdr = render({0.0, 0.0, 400e3}, 90.0, -60.0, -30.0, 90.0, 40.0);
