@@ -343,8 +343,7 @@ TEST(HillaireLowlandsGLTest, NoDarkBandWhereTheTerrainLiesBelowTheBottomSphere) 
       at = i;
     }
   }
-  EXPECT_GT(darkest, 0.012f) << "pixel " << at % width << ", " << at / width
-                             << " (rows bottom-up)";
+  EXPECT_GT(darkest, 0.012f) << "pixel " << at % width << ", " << at / width << " (rows bottom-up)";
 }
 
 TEST_F(HillaireGLTest, NightSideIsDarkFromOrbit) {
