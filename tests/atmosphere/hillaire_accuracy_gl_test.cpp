@@ -118,7 +118,7 @@ INSTANTIATE_TEST_SUITE_P(CanonicalScenes, HillaireAccuracyGLTest,
                                            AccuracyCase{"earth_sunset", 262144, 0.035},
                                            AccuracyCase{"earth_twilight", 262144, 0.059},
                                            AccuracyCase{"mars_noon", 524288, 0.041},
-                                           AccuracyCase{"mars_sunset", 65536, 0.213}),
+                                           AccuracyCase{"mars_sunset", 1048576, 0.21}),
                          [](const auto& test_info) { return std::string(test_info.param.scene); });
 
 // Every canonical scene with an atmosphere, dense and strongly forward
