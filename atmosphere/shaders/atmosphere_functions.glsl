@@ -136,17 +136,26 @@ Real cornette_shanks_phase(Real g, Real nu) {
 // does not dip below its start's altitude by much; on Earth, 40 uniform
 // steps put 0.018 too much optical depth on a ray 2 deg above the horizon
 // (transmittance 1-2 % low at sunset), 40 of these 0.0044 at worst.
+//
+// Sample i (1 to steps) of that rule on the path of length L: the altitude
+// there, and its weight, which the sum times L / steps turns into dt.
+Real path_to_top_sample(IN(Atmosphere) atmosphere, Real r, Real mu, Real length_to_top, int i,
+                        int steps, OUT(Real) weight) {
+  Real u = Real(i) / Real(steps);
+  Real t = length_to_top * u * u;
+  // dt = 2 L u du; the sample at u = 0 has weight 0.
+  weight = (i == steps ? Real(0.5) : Real(1.0)) * Real(2.0) * u;
+  // Law of cosines: radius at distance t along the ray.
+  return sqrt(t * t + Real(2.0) * r * mu * t + r * r) - atmosphere.bottom_radius;
+}
+
 Real3 optical_depth_to_top(IN(Atmosphere) atmosphere, Real r, Real mu, int steps) {
   Real length_to_top = distance_to_top_boundary(atmosphere, r, mu);
   Real3 sum = Real3(0.0);
   for (int i = 1; i <= steps; ++i) {
-    Real u = Real(i) / Real(steps);
-    Real t = length_to_top * u * u;
-    // Law of cosines: radius at distance t along the ray.
-    Real r_t = sqrt(t * t + Real(2.0) * r * mu * t + r * r);
-    // dt = 2 L u du; the sample at u = 0 has weight 0.
-    Real weight = (i == steps ? Real(0.5) : Real(1.0)) * Real(2.0) * u;
-    sum += weight * extinction_at(atmosphere, r_t - atmosphere.bottom_radius);
+    Real weight;
+    Real altitude = path_to_top_sample(atmosphere, r, mu, length_to_top, i, steps, weight);
+    sum += weight * extinction_at(atmosphere, altitude);
   }
   return sum * (length_to_top / Real(steps));
 }

@@ -189,7 +189,8 @@ Real3 sun_visibility(IN(Atmosphere) atmosphere, Real r, Real mu_s) {
 // - kSourceSky: the sun with the true phase functions and the glow's
 //   forward gain, plus every higher order from the multiple-scattering LUT
 //   (Hillaire 2020, eq. 11);
-// - kSourceFirstOrder: the sun with the true phase functions alone;
+// - kSourceFirstOrder: the sun with the true phase functions alone
+//   (gather_order splits it into the two kinds below);
 // - kSourceIsotropicSun: the sun with the isotropic phase (the paper's
 //   L_2 pass, sec. 5.5);
 // - kSourceNextOrder: the previous order's light (scattering_order_lookup)
@@ -322,11 +323,9 @@ Real mie_column_to_top(IN(Atmosphere) atmosphere, Real r, Real mu, int steps) {
   Real length_to_top = distance_to_top_boundary(atmosphere, r, mu);
   Real sum = Real(0.0);
   for (int i = 1; i <= steps; ++i) {
-    Real u = Real(i) / Real(steps);
-    Real t = length_to_top * u * u;
-    Real r_t = sqrt(t * t + Real(2.0) * r * mu * t + r * r);
-    Real weight = (i == steps ? Real(0.5) : Real(1.0)) * Real(2.0) * u;
-    sum += weight * profile_density(atmosphere.mie_density, r_t - atmosphere.bottom_radius);
+    Real weight;
+    Real altitude = path_to_top_sample(atmosphere, r, mu, length_to_top, i, steps, weight);
+    sum += weight * profile_density(atmosphere.mie_density, altitude);
   }
   return sum * (length_to_top / Real(steps));
 }
@@ -419,9 +418,12 @@ void accumulate_segment(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, Rea
       source = sun * sigma_s * isotropic_phase();
     } else {
       source = sun * (sigma_r * phase_r + sigma_m * phase_m);
-      if (source_kind == kSourceSky) {
+      // The glow needs the sun: no lookups in the planet's shadow.
+      if (source_kind == kSourceSky && sun.x + sun.y + sun.z > Real(0.0)) {
         Real3 tau_sun = atmosphere.mie_scattering * mie_column_lookup(atmosphere, r, mu_s);
         source += sun * sigma_m * forward_gain(atmosphere, dot(d, sun_dir), tau_sun);
+      }
+      if (source_kind == kSourceSky) {
         source += scattered_field(atmosphere, false, r, mu_s, sigma_r, sigma_m, p, d, sun_dir);
       }
     }

@@ -16,6 +16,9 @@ namespace planet {
 namespace {
 
 constexpr GLuint kGroupSize = 8;  // local_size_x and _y of every compute pass
+// After a pass that writes a LUT: later passes sample or write it.
+constexpr GLbitfield kLutBarrier =
+    GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT;
 
 GLuint groups(int size) { return GLuint((size + int(kGroupSize) - 1) / int(kGroupSize)); }
 
@@ -65,6 +68,17 @@ std::vector<std::string> view_defines(const HillaireTechnique::Settings& setting
     defines.push_back("FORWARD_GAIN_LUT 1");
   }
   return defines;
+}
+
+// One compute pass that fills a whole 2D LUT, one invocation per texel.
+void build_lut(GpuTimer& timer, const char* name, Program& program, const Texture& lut,
+               GLenum format, int width, int height) {
+  timer.begin(name);
+  program.use();
+  bind_image(0, lut.id(), format, false);
+  glDispatchCompute(groups(width), groups(height), 1);
+  glMemoryBarrier(kLutBarrier);
+  timer.end();
 }
 
 }  // namespace
@@ -130,15 +144,9 @@ void HillaireTechnique::update(const AtmosphereModel& model) {
 
 void HillaireTechnique::prepare(GpuTimer& timer) {
   glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, block_.id());
-  const GLbitfield barrier = GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT;
 
-  timer.begin("transmittance_lut");
-  transmittance_program_.use();
-  bind_image(0, transmittance_lut_.id(), GL_RGBA32F, false);
-  glDispatchCompute(groups(shared::kTransmittanceLutWidth), groups(shared::kTransmittanceLutHeight),
-                    1);
-  glMemoryBarrier(barrier);
-  timer.end();
+  build_lut(timer, "transmittance_lut", transmittance_program_, transmittance_lut_, GL_RGBA32F,
+            shared::kTransmittanceLutWidth, shared::kTransmittanceLutHeight);
 
   glBindTextureUnit(2, transmittance_lut_.id());
   timer.begin("multiple_scattering_lut");
@@ -147,7 +155,7 @@ void HillaireTechnique::prepare(GpuTimer& timer) {
     multiple_scattering_program_.use();
     bind_image(0, multiple_scattering_lut_.id(), GL_RGBA32F, false);
     glDispatchCompute(groups(w), groups(h), 1);
-    glMemoryBarrier(barrier);
+    glMemoryBarrier(kLutBarrier);
   } else {
     // Each order from the one before: h rows of its moments and one row
     // of E_n.
@@ -157,7 +165,7 @@ void HillaireTechnique::prepare(GpuTimer& timer) {
       if (k > 0) glBindTextureUnit(7, order_luts_[k - 1].id());
       bind_image(0, order_luts_[k].id(), GL_RGBA32F, false);
       glDispatchCompute(groups(w), groups(h + 1), 1);
-      glMemoryBarrier(barrier);
+      glMemoryBarrier(kLutBarrier);
     }
     orders_sum_program_.use();
     for (size_t k = 0; k < order_luts_.size(); ++k) {
@@ -166,18 +174,13 @@ void HillaireTechnique::prepare(GpuTimer& timer) {
     bind_image(0, multiple_scattering_lut_.id(), GL_RGBA32F, false);
     bind_image(1, ground_irradiance_lut_.id(), GL_RGBA32F, false);
     glDispatchCompute(groups(w), groups(h + 1), 1);
-    glMemoryBarrier(barrier);
+    glMemoryBarrier(kLutBarrier);
   }
   timer.end();
 
   if (settings_.multiple_scattering == MultipleScattering::kOrders) {
-    timer.begin("forward_gain_lut");
-    forward_gain_program_.use();
-    bind_image(0, forward_gain_lut_.id(), GL_R32F, false);
-    glDispatchCompute(groups(shared::kForwardGainLutWidth), groups(shared::kForwardGainLutHeight),
-                      1);
-    glMemoryBarrier(barrier);
-    timer.end();
+    build_lut(timer, "forward_gain_lut", forward_gain_program_, forward_gain_lut_, GL_R32F,
+              shared::kForwardGainLutWidth, shared::kForwardGainLutHeight);
   }
   prepared_ = true;
 }
@@ -216,7 +219,6 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   glBindTextureUnit(2, transmittance_lut_.id());
   glBindTextureUnit(3, multiple_scattering_lut_.id());
   glBindTextureUnit(8, forward_gain_lut_.id());
-  const GLbitfield barrier = GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT;
 
   // No sky-view LUT and no froxels where the per-pixel path draws alone
   // (high up, deep space): a frame models no more than it shows.
@@ -227,7 +229,7 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
     glUniform3fv(sky_view_program_.uniform("u_sun_dir_local"), 1, glm::value_ptr(sun_local));
     bind_image(0, sky_view_lut_.id(), GL_RGBA16F, false);
     glDispatchCompute(groups(shared::kSkyViewLutWidth), groups(shared::kSkyViewLutHeight), 1);
-    glMemoryBarrier(barrier);
+    glMemoryBarrier(kLutBarrier);
     timer.end();
 
     timer.begin("aerial_perspective");
@@ -241,7 +243,7 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
     bind_image(1, aerial_transmittance_.id(), GL_RGBA16F, true);
     glDispatchCompute(groups(shared::kAerialPerspectiveSize),
                       groups(shared::kAerialPerspectiveSize), 1);
-    glMemoryBarrier(barrier);
+    glMemoryBarrier(kLutBarrier);
     timer.end();
   }
 
