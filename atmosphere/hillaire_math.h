@@ -22,7 +22,7 @@ namespace {
 Real3 transmittance_lookup(IN(Atmosphere) atmosphere, Real r, Real mu) {
   return transmittance_to_top(atmosphere, r, mu, 40);
 }
-Real3 multiple_scattering_lookup(IN(Atmosphere), Real, Real, int) { return Real3(0.0); }
+Real3 multiple_scattering_lookup(Real, Real, int) { return Real3(0.0); }
 
 // The previous order of scattering, for the CPU evaluation of the next one:
 // an RGBA float table as the GPU holds it (hillaire_technique.h: the parts
@@ -45,18 +45,16 @@ Real3 sample_table(const float* table, int width, int height, Real u, Real v) {
   return glm::mix(glm::mix(at(x0, y0), at(x1, y0), fx), glm::mix(at(x0, y1), at(x1, y1), fx), fy);
 }
 
-Real3 scattering_order_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s, int part);
+Real3 scattering_order_lookup(Real u, Real v, int part);
 Real3 ground_order_lookup(IN(Atmosphere) atmosphere, Real mu_s);
 Real forward_gain_lookup(IN(Atmosphere) atmosphere, Real nu, Real tau);
 Real mie_column_lookup(IN(Atmosphere) atmosphere, Real r, Real mu);
 
 #include "atmosphere/shaders/hillaire_functions.glsl"
 
-Real3 scattering_order_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s, int part) {
+Real3 scattering_order_lookup(Real u, Real v, int part) {
   if (!cpu_order_table) return Real3(0.0);
   const int w = kMultipleScatteringLutWidth, h = kMultipleScatteringLutHeight;
-  Real u, v;
-  multiple_scattering_lut_uv_from_r_mu_s(atmosphere, r, mu_s, u, v);
   return sample_table(cpu_order_table, kFieldParts * w, h + 1, (part + u) / kFieldParts,
                       v * h / (h + 1));
 }
@@ -82,6 +80,7 @@ Real forward_gain_lookup(IN(Atmosphere) atmosphere, Real nu, Real tau) {
 #undef OUT
 #undef INOUT
 
+static_assert(kFieldDegree == 4, "field_basis and scattered_field are written out to degree 4");
 static_assert(kTransmittanceSteps == 40, "transmittance_lookup above integrates with 40 steps");
 
 }  // namespace planet::shared

@@ -9,12 +9,12 @@
 //   INOUT(T)                                    in-out parameters
 //   Real3 transmittance_lookup(IN(Atmosphere), Real r, Real mu)
 //       transmittance from radius r to the top along zenith cosine mu
-//   Real3 multiple_scattering_lookup(IN(Atmosphere), Real r, Real mu_s, int part)
-//       Psi_ms per unit solar irradiance (Hillaire 2020, eq. 10) for part
-//       kFieldMean, and its first moment for kFieldMomentUp and
-//       kFieldMomentSun (see "Scattering orders" below)
-//   Real3 scattering_order_lookup(IN(Atmosphere), Real r, Real mu_s, int part)
-//       J_n, the mean radiance of the previous order, and its moment
+//   Real3 multiple_scattering_lookup(Real u, Real v, int part)
+//       the multiple-scattering LUT's part (FieldMoments) at its texture
+//       coordinates (multiple_scattering_lut_uv_from_r_mu_s), per unit solar
+//       irradiance: part kFieldMean is Psi_ms (Hillaire 2020, eq. 10)
+//   Real3 scattering_order_lookup(Real u, Real v, int part)
+//       the previous order's part likewise (part kFieldMean: J_n)
 //   Real3 ground_order_lookup(IN(Atmosphere), Real mu_s)
 //       E_n, that order's irradiance on the ground
 //   Real mie_column_lookup(IN(Atmosphere), Real r, Real mu)
@@ -35,16 +35,24 @@ const int kTransmittanceSteps = 40;
 // and within 3 % with 128 (the sky: 6.6 and 4.7 % worst channel).
 const int kMultipleScatteringLutWidth = 128;
 const int kMultipleScatteringLutHeight = 32;
-// The parts of a multiple-scattering or order table, side by side along u.
+// The parts of a multiple-scattering or order table, side by side along u:
+// the field's spherical-harmonic coefficients up to degree kFieldDegree
+// that the symmetry about the sun's vertical plane leaves (see
+// FieldMoments), (L + 1)(L + 2) / 2 of them. Part 0 is the mean radiance.
+// At Mars sunset the sun's glow crosses the dust near the ground sideways;
+// to degree 2, the second order's irradiance on the ground came out
+// 18-25 % above the path tracer's, to degree 4 within 3-9 %, to 6 and 8
+// within 2-8 % (8 x 8 or 16 x 16 directions alike). field_basis is
+// written out to degree 4.
+const int kFieldDegree = 4;
+const int kFieldParts = (kFieldDegree + 1) * (kFieldDegree + 2) / 2;
 const int kFieldMean = 0;
-const int kFieldMomentUp = 1;
-const int kFieldMomentSun = 2;
-const int kFieldQuadrupoleUpUp = 3;
-const int kFieldQuadrupoleSunSun = 4;
-const int kFieldQuadrupoleUpSun = 5;
-const int kFieldParts = 6;
-// Orders of scattering summed explicitly before the geometric tail.
-const int kScatteringOrders = 4;
+// Orders of scattering summed explicitly before the geometric tail. The
+// ratio of successive orders still falls after the fourth in thick dust
+// (Mars sunset, red: 0.78, 0.66, 0.62, 0.61 from the fourth to the
+// eighth), and a tail from 4 orders made the red sky 2x too bright beyond
+// them; from 6 orders the tail is within 3 % of orders 7 and up.
+const int kScatteringOrders = 6;
 // 8 x 8 stratified directions over the sphere (Hillaire 2020, sec. 5.5: 64).
 const int kMultipleScatteringDirectionsSqrt = 8;
 // Segments per gathered ray: from 20 to 12 no canonical sky moved by more
@@ -208,31 +216,55 @@ const int kSourceSunRayleigh = 4;
 const int kSourceSunMie = 5;
 
 // The light of an order (or of all higher orders) arriving at a point, as
-// its first three moments over the sphere of directions w looked along:
-// the mean radiance J, the first moment M = mean of L w, and the traceless
-// second moment T = mean of L (w w^T - I / 3), in the local frame of the
-// zenith (up) and the sun's horizontal direction (sun). By the symmetry
-// about the sun's vertical plane, M has no component across it and T
-// only the components up-up, sun-sun and up-sun (across-across is
-// -(up-up + sun-sun)).
+// its spherical-harmonic coefficients over the sphere of directions w
+// looked along, in the local frame of the zenith (z), the sun's horizontal
+// direction (x) and the direction across it (y). The field is symmetric
+// about the sun's vertical plane (y -> -y), which leaves the terms
+// cos(m phi) of each degree l: part l (l + 1) / 2 + m for 0 <= m <= l.
+// The basis is orthonormal in the mean over the sphere, with B_00 = 1, and
+// the sum over m of B_lm(w) B_lm(d) is (2l + 1) times the mean of P_l(w.d)
+// over w and its mirror image (the addition theorem, less the sin(m phi)
+// terms, which cancel over an even field). Part (l, m) holds the mean over
+// the sphere of L B_lm; part 0 is the mean radiance.
 struct FieldMoments {
-  Real3 mean;
-  Real3 up, sun;
-  Real3 up_up, sun_sun, up_sun;
+  Real3 part[kFieldParts];
 };
 
-Real3 field_part(IN(FieldMoments) f, int part) {
-  if (part == kFieldMean) return f.mean;
-  if (part == kFieldMomentUp) return f.up;
-  if (part == kFieldMomentSun) return f.sun;
-  if (part == kFieldQuadrupoleUpUp) return f.up_up;
-  if (part == kFieldQuadrupoleSunSun) return f.sun_sun;
-  return f.up_sun;
+// B_lm(d) for part k = (l, m), d = (x, y, z) in the local frame:
+//   sqrt((2l + 1)(l - m)! / (l + m)!) (times sqrt 2 for m > 0) Q_lm(z) R_m,
+// with Q_lm the associated Legendre function over sin^m(theta) (Q_mm =
+// (2m - 1)!!, Q_(m+1)m = (2m + 1) z Q_mm, and Bonnet's recursion in l) and
+// R_m = Re((x + i y)^m) = sin^m(theta) cos(m phi). Written out to degree 4
+// so that the compiler folds it into each call's few products.
+Real field_basis(int part, Real x, Real y, Real z) {
+  Real zz = z * z;
+  Real r2 = x * x - y * y;
+  Real r3 = x * r2 - Real(2.0) * x * y * y;
+  Real r4 = r2 * r2 - Real(4.0) * x * x * y * y;
+  if (part == 0) return Real(1.0);
+  if (part == 1) return sqrt(Real(3.0)) * z;
+  if (part == 2) return sqrt(Real(3.0)) * x;
+  if (part == 3) return sqrt(Real(5.0)) * Real(0.5) * (Real(3.0) * zz - Real(1.0));
+  if (part == 4) return sqrt(Real(5.0) / Real(3.0)) * Real(3.0) * z * x;
+  if (part == 5) return sqrt(Real(5.0) / Real(12.0)) * Real(3.0) * r2;
+  if (part == 6) return sqrt(Real(7.0)) * Real(0.5) * (Real(5.0) * zz - Real(3.0)) * z;
+  if (part == 7) return sqrt(Real(7.0) / Real(6.0)) * Real(0.5) * (Real(15.0) * zz - Real(3.0)) * x;
+  if (part == 8) return sqrt(Real(7.0) / Real(60.0)) * Real(15.0) * z * r2;
+  if (part == 9) return sqrt(Real(7.0) / Real(360.0)) * Real(15.0) * r3;
+  if (part == 10) return Real(3.0) / Real(8.0) * ((Real(35.0) * zz - Real(30.0)) * zz + Real(3.0));
+  if (part == 11) {
+    return sqrt(Real(9.0) / Real(10.0)) * Real(0.5) * (Real(35.0) * zz - Real(15.0)) * z * x;
+  }
+  if (part == 12) return sqrt(Real(1.0) / Real(20.0)) * Real(0.5) * (Real(105.0) * zz - Real(15.0)) * r2;
+  if (part == 13) return sqrt(Real(1.0) / Real(280.0)) * Real(105.0) * z * r3;
+  return sqrt(Real(1.0) / Real(2240.0)) * Real(105.0) * r4;
 }
 
-Real3 field_lookup(IN(Atmosphere) atmosphere, bool previous_order, Real r, Real mu_s, int part) {
-  return previous_order ? scattering_order_lookup(atmosphere, r, mu_s, part)
-                        : multiple_scattering_lookup(atmosphere, r, mu_s, part);
+Real3 field_part(IN(FieldMoments) f, int part) { return f.part[part]; }
+
+Real3 field_lookup(bool previous_order, Real u, Real v, int part) {
+  return previous_order ? scattering_order_lookup(u, v, part)
+                        : multiple_scattering_lookup(u, v, part);
 }
 
 // The Legendre coefficient g_l of Cornette-Shanks (p = sum over l of
@@ -267,16 +299,16 @@ Real cornette_shanks_legendre(Real g, int l) {
   return cornette_shanks_term(g, l, g_l_minus_2);
 }
 
-// --- The sun's glow past the second moment -------------------------------------
-// The table carries each order's light by its Legendre terms up to l = 2,
-// and scattered_field scatters no more. Mie's forward peak lives in the
-// terms from l = 3, and so does the light it makes: round the sun, every
-// point sees a glow of sunlight that the dust along the sun's path has
-// scattered forward, once or many times (thick dust: the Mars sky). The
-// glow's terms up to l = 2 come back through the table's orders; its terms
-// from l = 3 were lost, which took light from beside the sun and spread it
-// over the sky: Mars noon's sky toward the horizon came out 13-33 % too
-// bright.
+// --- The sun's glow past the table's degree ------------------------------------
+// The table carries each order's light by its terms up to degree
+// kFieldDegree, and scattered_field scatters no more. Mie's forward peak
+// lives in the terms past it, and so does the light it makes: round the
+// sun, every point sees a glow of sunlight that the dust along the sun's
+// path has scattered forward, once or many times (thick dust: the Mars
+// sky). The glow's lower terms come back through the table's orders; the
+// higher ones were lost, which took light from beside the sun and spread
+// it over the sky: with the table to degree 2, Mars noon's sky toward the
+// horizon came out 13-33 % too bright.
 //
 // Taken as spreading in angle alone, not sideways off the path (the air
 // changes slowly across the few degrees of Mie's peak), each Mie
@@ -285,17 +317,20 @@ Real cornette_shanks_legendre(Real g, int l) {
 // the atmosphere along the sun's path, a Poisson number of them leaves term
 // l of the sunlight arriving at a point at exp(g_l tau) times what
 // extinction left of the beam: the beam itself and its glow. Scattered
-// there toward the camera, the glow's terms from l = 3 add to the sun's
-// phase
-//   forward_gain(nu, tau) = sum over l >= 3 of (2l + 1) / (4 pi) g_l (exp(g_l tau) - 1) P_l(nu)
+// there toward the camera, the glow's terms past L = kFieldDegree add to
+// the sun's phase
+//   forward_gain(nu, tau) = sum over l > L of (2l + 1) / (4 pi) g_l (exp(g_l tau) - 1) P_l(nu)
 // per unit of Mie scattering. It is zero at tau = 0 and integrates to zero
 // over the sphere: it moves light toward the sun and makes none. It depends
 // on g and (nu, tau) alone: the forward-gain LUT holds it over (nu, tau).
-// Against the path tracer's second order at Mars noon, its first term in
-// tau makes up 63-94 % of what the moments miss toward the horizon and
-// 84-132 % beside the sun. With it (and the first order's glow sampled
-// about the sun, gather_order), Mars noon's worst channel went from 19.9
-// to 3.4 %.
+// Against the path tracer's second order at Mars noon (with L = 2), its
+// first term in tau made up 63-94 % of what the table missed toward the
+// horizon and 84-132 % beside the sun.
+//
+// The same chain of forward scatterings as a source inside the orders
+// (each order's terms past L, from this series) made Mars sunset worse
+// (24.8 % red against 17.4 %): sparse gather directions see its broad
+// negative part and miss its peak.
 //
 // exp(-tau) forward_gain, bounded (the beam has lost at least exp(-tau)
 // of itself), summed over kForwardGainTerms terms.
@@ -310,6 +345,7 @@ Real forward_gain_times_extinction(Real g, Real nu, Real tau) {
     legendre_before = legendre;
     legendre = next;
     g_l_minus_2 *= g;
+    if (l <= kFieldDegree) continue;
     Real g_l = cornette_shanks_term(g, l, g_l_minus_2);
     sum += Real(2 * l + 1) / (Real(4.0) * kPi) * g_l * (exp((g_l - Real(1.0)) * tau) - exp(-tau)) *
            legendre;
@@ -358,36 +394,51 @@ Real3 forward_gain(IN(Atmosphere) atmosphere, Real nu, IN(Real3) tau) {
 
 // The light of a field (the multiple-scattering LUT's, or the previous
 // order's) arriving at p, scattered toward a camera that looks along d.
-// Expanding the phase function in Legendre polynomials, a field's moments
-// scatter as sigma (J + 3 g_1 M.d + 7.5 g_2 d^T T d + ...): Rayleigh has
-// g_1 = 0 and g_2 = 1/10. Hillaire keeps J alone, which spreads the
-// forward glow of thick dust over the whole sky and misses the sky's
-// brightening toward the horizon. Each phase's sum is held at zero where
-// the truncated series would go negative.
+// By Funk-Hecke, a phase function with Legendre coefficients g_l (p = sum
+// of (2l + 1) / (4 pi) g_l P_l) scatters the field's degree l times g_l:
+// sigma times the sum over (l, m) of g_l f_lm B_lm(d). Rayleigh has g_0 =
+// 1, g_2 = 1/10 and no others, so the table scatters it exactly; Mie's g_l
+// past kFieldDegree are left to the glow's gain (forward_gain). Hillaire
+// keeps the mean alone, which spreads the forward glow of thick dust over
+// the whole sky and misses the sky's brightening toward the horizon. Each
+// phase's sum is held at zero where the truncated series would go
+// negative.
 Real3 scattered_field(IN(Atmosphere) atmosphere, bool previous_order, Real r, Real mu_s,
                       IN(Real3) sigma_r, IN(Real3) sigma_m, IN(Real3) p, IN(Real3) d,
                       IN(Real3) sun_dir) {
   Real3 up = p / r;
   Real3 horizontal = sun_dir - up * dot(up, sun_dir);
   Real h = length(horizontal);
-  Real d_up = dot(d, up);
-  Real d_sun = h > Real(1e-6) ? dot(d, horizontal) / h : Real(0.0);
-  Real d_across_squared = max(Real(1.0) - d_up * d_up - d_sun * d_sun, Real(0.0));
-  Real3 mean = field_lookup(atmosphere, previous_order, r, mu_s, kFieldMean);
-  Real3 up_up = field_lookup(atmosphere, previous_order, r, mu_s, kFieldQuadrupoleUpUp);
-  Real3 sun_sun = field_lookup(atmosphere, previous_order, r, mu_s, kFieldQuadrupoleSunSun);
-  Real3 quadrupole =
-      up_up * (d_up * d_up - d_across_squared) + sun_sun * (d_sun * d_sun - d_across_squared) +
-      Real(2.0) * d_up * d_sun *
-          field_lookup(atmosphere, previous_order, r, mu_s, kFieldQuadrupoleUpSun);
-  Real3 dipole = field_lookup(atmosphere, previous_order, r, mu_s, kFieldMomentUp) * d_up +
-                 field_lookup(atmosphere, previous_order, r, mu_s, kFieldMomentSun) * d_sun;
+  Real z = dot(d, up);
+  Real x = h > Real(1e-6) ? dot(d, horizontal) / h : Real(0.0);
+  // The field is even across the sun's vertical plane: the sign of y does
+  // not matter.
+  Real y = sqrt(max(Real(1.0) - z * z - x * x, Real(0.0)));
+  Real u, v;
+  multiple_scattering_lut_uv_from_r_mu_s(atmosphere, r, mu_s, u, v);
+  // Degree by degree, written out: as a loop over the parts, llvmpipe ran
+  // the scattering-orders pass 2.2 times slower.
+  Real3 degree_0 = field_lookup(previous_order, u, v, 0);
+  Real3 degree_1 = field_basis(1, x, y, z) * field_lookup(previous_order, u, v, 1) +
+                   field_basis(2, x, y, z) * field_lookup(previous_order, u, v, 2);
+  Real3 degree_2 = field_basis(3, x, y, z) * field_lookup(previous_order, u, v, 3) +
+                   field_basis(4, x, y, z) * field_lookup(previous_order, u, v, 4) +
+                   field_basis(5, x, y, z) * field_lookup(previous_order, u, v, 5);
+  Real3 degree_3 = field_basis(6, x, y, z) * field_lookup(previous_order, u, v, 6) +
+                   field_basis(7, x, y, z) * field_lookup(previous_order, u, v, 7) +
+                   field_basis(8, x, y, z) * field_lookup(previous_order, u, v, 8) +
+                   field_basis(9, x, y, z) * field_lookup(previous_order, u, v, 9);
+  Real3 degree_4 = field_basis(10, x, y, z) * field_lookup(previous_order, u, v, 10) +
+                   field_basis(11, x, y, z) * field_lookup(previous_order, u, v, 11) +
+                   field_basis(12, x, y, z) * field_lookup(previous_order, u, v, 12) +
+                   field_basis(13, x, y, z) * field_lookup(previous_order, u, v, 13) +
+                   field_basis(14, x, y, z) * field_lookup(previous_order, u, v, 14);
   Real g = atmosphere.mie_g;
-  Real3 rayleigh = max(mean + Real(0.75) * quadrupole, Real3(0.0));
-  Real3 mie = max(mean + Real(3.0) * cornette_shanks_legendre(g, 1) * dipole +
-                      Real(7.5) * cornette_shanks_legendre(g, 2) * quadrupole,
-                  Real3(0.0));
-  return sigma_r * rayleigh + sigma_m * mie;
+  Real3 rayleigh = degree_0 + Real(0.1) * degree_2;
+  Real3 mie = degree_0 + cornette_shanks_legendre(g, 1) * degree_1 +
+              cornette_shanks_legendre(g, 2) * degree_2 + cornette_shanks_legendre(g, 3) * degree_3 +
+              cornette_shanks_legendre(g, 4) * degree_4;
+  return sigma_r * max(rayleigh, Real3(0.0)) + sigma_m * max(mie, Real3(0.0));
 }
 
 // One segment [t0, t1] of a ray o + t d, sampled at its middle. The source
@@ -566,19 +617,20 @@ Real3 multiple_scattering_texel(IN(Atmosphere) atmosphere, Real r, Real mu_s) {
 // the orders above the second come out 40 % low and the blue sky 7 %.
 // Here the orders are summed one by one, each from the last, as
 // Bruneton and Neyret do, but kept to Hillaire's 2D table over (r, mu_s):
-// the light of an order at a point is described by its mean radiance J_n
-// and its first moment M_n (Hillaire's isotropic assumption keeps J_n
-// alone; the moment carries the forward scattering of thick dust).
-//   J_1, M_1: the sun scattered once (true phase functions) or reflected by
+// the light of an order at a point is described by its spherical-harmonic
+// terms to degree kFieldDegree in the frame of the zenith and the sun
+// (FieldMoments; Hillaire's isotropic assumption keeps the mean J_n alone,
+// the higher terms carry the forward scattering of thick dust).
+//   order 1: the sun scattered once (true phase functions) or reflected by
 //        the ground, over the sphere at (r, mu_s);
 //   E_1: the sun scattered once, as irradiance on the ground;
-//   J_(n+1), M_(n+1): order n scattered once more (scattered_field) along
+//   order n + 1: order n scattered once more (scattered_field) along
 //        every direction, plus the ground lit by E_n; E_(n+1): order n
 //        scattered onto the ground.
 // Psi_ms = J_1 + ... + J_N plus the geometric tail J_N q / (1 - q), with q
-// the ratio of the last two orders, and the moments alike; the ground's
-// sky light is the same sum over E_n (terrain and the 400 km view use it).
-// N = kScatteringOrders.
+// the ratio of the last two orders, and the other terms alike; the
+// ground's sky light is the same sum over E_n (terrain and the 400 km view
+// use it). N = kScatteringOrders.
 
 // Row j of n over the sphere for a point at radius r: half the rows above
 // the horizon, half below it, each packed toward the horizon by a square
@@ -602,15 +654,14 @@ Real gather_row_cosine(IN(Atmosphere) atmosphere, Real r, int j, int n, bool upp
   return above ? mu_h + span * sm * sm : mu_h - span * sm * sm;
 }
 
-// Light l arriving along d, added to the moments (or, for the ground's
-// irradiance, l d.z to the mean).
+// Light l arriving along d (local frame), added to the moments (or, for
+// the ground's irradiance, l d.z to the mean alone).
 void add_to_moments(INOUT(FieldMoments) f, IN(Real3) l, IN(Real3) d, bool ground_irradiance) {
-  f.mean += ground_irradiance ? l * max(d.z, Real(0.0)) : l;
-  f.up += l * d.z;
-  f.sun += l * d.x;
-  f.up_up += l * (d.z * d.z - Real(1.0) / Real(3.0));
-  f.sun_sun += l * (d.x * d.x - Real(1.0) / Real(3.0));
-  f.up_sun += l * (d.x * d.z);
+  if (ground_irradiance) {
+    f.part[kFieldMean] += l * max(d.z, Real(0.0));
+    return;
+  }
+  for (int k = 0; k < kFieldParts; ++k) f.part[k] += field_basis(k, d.x, d.y, d.z) * l;
 }
 
 // The cosine to the sun of row j of n whose shares of Henyey-Greenstein's
@@ -639,19 +690,17 @@ FieldMoments gather_order(IN(Atmosphere) atmosphere, Real r, Real mu_s, int sour
   Real3 o = Real3(0.0, 0.0, r);
   Real3 sun_dir = Real3(safe_sqrt(Real(1.0) - mu_s * mu_s), Real(0.0), mu_s);
   FieldMoments f;
-  f.mean = Real3(0.0);
-  f.up = Real3(0.0);
-  f.sun = Real3(0.0);
-  f.up_up = Real3(0.0);
-  f.sun_sun = Real3(0.0);
-  f.up_sun = Real3(0.0);
+  for (int k = 0; k < kFieldParts; ++k) f.part[k] = Real3(0.0);
   bool first_order = source_kind == kSourceFirstOrder;
   int kind = first_order ? kSourceSunRayleigh : source_kind;
   const int n = kMultipleScatteringDirectionsSqrt;
   for (int j = 0; j < n; ++j) {
     Real weight;
     Real cos_theta = gather_row_cosine(atmosphere, r, j, n, ground_irradiance, weight);
-    for (int i = 0; i < n; ++i) {
+    // The light is the same along the mirror image of a direction in the
+    // sun's vertical plane (y -> -y), and the moments are even in y: the
+    // azimuths (i + 1/2) 2 pi / n pair off, and half of them count twice.
+    for (int i = 0; i < n / 2; ++i) {
       Real3 d = gather_direction(cos_theta, i, n);
       Real t_end;
       bool hits_ground;
@@ -660,7 +709,7 @@ FieldMoments gather_order(IN(Atmosphere) atmosphere, Real r, Real mu_s, int sour
       integrate_scattering(atmosphere, o, d, Real(0.0), t_end, sun_dir, kMultipleScatteringSteps,
                            kind, hits_ground && !ground_irradiance, luminance, transmittance,
                            f_ms);
-      add_to_moments(f, (weight / Real(n)) * luminance, d, ground_irradiance);
+      add_to_moments(f, (Real(2.0) * weight / Real(n)) * luminance, d, ground_irradiance);
     }
   }
   if (first_order) {
@@ -675,10 +724,14 @@ FieldMoments gather_order(IN(Atmosphere) atmosphere, Real r, Real mu_s, int sour
       Real nu = henyey_greenstein_row_cosine(g, j, n);
       Real sin_nu = safe_sqrt(Real(1.0) - nu * nu);
       Real weight = Real(1.5) * (Real(1.0) + nu * nu) / (Real(2.0) + g * g);
-      for (int i = 0; i < n; ++i) {
-        // Azimuths offset by half a column per row, so that no two rows
-        // line up.
-        Real phi = Real(2.0) * kPi * (Real(i) + Real(0.5) * Real(1 + (j & 1))) / Real(n);
+      // Azimuths offset by half a column every other row, so that no two
+      // rows line up: (i + 1/2) 2 pi / n, then i 2 pi / n. As for the rows
+      // above, mirror images pair off; 0 and pi are their own.
+      bool offset = (j & 1) == 0;
+      for (int i = 0; i <= n / 2; ++i) {
+        if (offset && i == n / 2) continue;
+        Real phi = Real(2.0) * kPi * (Real(i) + (offset ? Real(0.5) : Real(0.0))) / Real(n);
+        Real mirror = offset || (i > 0 && i < n / 2) ? Real(2.0) : Real(1.0);
         Real3 d = nu * sun_dir + sin_nu * (cos(phi) * side + sin(phi) * across);
         if (ground_irradiance && d.z <= Real(0.0)) continue;
         Real t_end;
@@ -690,12 +743,13 @@ FieldMoments gather_order(IN(Atmosphere) atmosphere, Real r, Real mu_s, int sour
                              transmittance, f_ms);
         // The mean over the sphere of L = K p is the mean over these
         // directions of K times the weight, over 4 pi.
-        add_to_moments(f, share * weight / (Real(4.0) * kPi) * luminance, d, ground_irradiance);
+        add_to_moments(f, mirror * share * weight / (Real(4.0) * kPi) * luminance, d,
+                       ground_irradiance);
       }
     }
   }
   // Irradiance: int L cos dw over the hemisphere, 2 pi times the mean.
-  if (ground_irradiance) f.mean *= Real(2.0) * kPi;
+  if (ground_irradiance) f.part[kFieldMean] *= Real(2.0) * kPi;
   return f;
 }
 

@@ -44,16 +44,68 @@ TEST(HillaireMathTest, CornetteShanksLegendreCoefficientsMatchTheIntegral) {
   }
 }
 
+// The basis of the multiple-scattering table's terms: orthonormal in the
+// mean over the sphere, and, for each degree l, summing over its parts to
+// (2l + 1) P_l averaged over a direction and its mirror image across the
+// sun's vertical plane (the addition theorem without the sin(m phi) terms,
+// which a field even across that plane does not have). scattered_field
+// relies on both.
+TEST(HillaireMathTest, FieldBasisIsOrthonormalAndAddsUpToLegendre) {
+  const int rows = 180, columns = 360;
+  std::vector<double> gram(size_t(shared::kFieldParts * shared::kFieldParts), 0.0);
+  for (int j = 0; j < rows; ++j) {
+    double z = 1.0 - 2.0 * (j + 0.5) / rows;  // uniform in z: equal areas
+    double s = std::sqrt(1.0 - z * z);
+    for (int i = 0; i < columns; ++i) {
+      double phi = 2.0 * shared::kPi * (i + 0.5) / columns;
+      double x = s * std::cos(phi), y = s * std::sin(phi);
+      for (int a = 0; a < shared::kFieldParts; ++a) {
+        for (int b = 0; b < shared::kFieldParts; ++b) {
+          gram[size_t(a * shared::kFieldParts + b)] +=
+              shared::field_basis(a, x, y, z) * shared::field_basis(b, x, y, z);
+        }
+      }
+    }
+  }
+  for (int a = 0; a < shared::kFieldParts; ++a) {
+    for (int b = 0; b < shared::kFieldParts; ++b) {
+      EXPECT_NEAR(gram[size_t(a * shared::kFieldParts + b)] / (rows * columns), a == b ? 1.0 : 0.0,
+                  1e-3)
+          << "parts " << a << ", " << b;
+    }
+  }
+  reference::Rng rng(7);
+  auto random_direction = [&] {
+    double z = 2.0 * rng.uniform() - 1.0, phi = 2.0 * shared::kPi * rng.uniform();
+    double s = std::sqrt(1.0 - z * z);
+    return glm::dvec3(s * std::cos(phi), s * std::sin(phi), z);
+  };
+  for (int trial = 0; trial < 100; ++trial) {
+    glm::dvec3 w = random_direction(), d = random_direction();
+    glm::dvec3 mirror(w.x, -w.y, w.z);
+    for (int l = 0; l <= shared::kFieldDegree; ++l) {
+      double sum = 0.0;
+      for (int part = l * (l + 1) / 2; part < (l + 1) * (l + 2) / 2; ++part) {
+        sum += shared::field_basis(part, w.x, w.y, w.z) * shared::field_basis(part, d.x, d.y, d.z);
+      }
+      double expected =
+          (2 * l + 1) * 0.5 * (legendre(l, glm::dot(w, d)) + legendre(l, glm::dot(mirror, d)));
+      EXPECT_NEAR(sum, expected, 1e-12) << "degree " << l;
+    }
+  }
+}
+
 // The angular distribution, over the cosine nu to the sun, of sunlight
 // scattered once (true phase) and then a Poisson number of times more over
 // Mie scattering depth tau, all within a homogeneous medium that keeps
 // every photon: by Funk-Hecke, term l of it is (2l + 1) / (4 pi) g_l
-// exp((g_l - 1) tau). The forward gain is its part from l = 3 beyond what
-// single scattering gives, so the whole distribution is
-//   exp(-tau) p + exp(-tau) forward_gain + the terms l <= 2 of the rest.
+// exp((g_l - 1) tau). The forward gain is its part past the table's
+// degree L beyond what single scattering gives, so the whole distribution
+// is
+//   exp(-tau) p + exp(-tau) forward_gain + the terms l <= L of the rest.
 double spread_distribution(double g, double nu, double tau) {
   double low = 0.0;
-  for (int l = 0; l <= 2; ++l) {
+  for (int l = 0; l <= shared::kFieldDegree; ++l) {
     double g_l = shared::cornette_shanks_legendre(g, l);
     low += (2 * l + 1) / (4.0 * shared::kPi) * g_l *
            (std::exp((g_l - 1.0) * tau) - std::exp(-tau)) * legendre(l, nu);

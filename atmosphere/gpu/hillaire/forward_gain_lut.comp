@@ -1,4 +1,4 @@
-// The forward-gain LUT (see "The sun's glow past the second moment" in
+// The forward-gain LUT (see "The sun's glow past the table's degree" in
 // hillaire_functions.glsl): exp(-tau) forward_gain over (nu, tau) for the
 // model's Mie g.
 #include "atmosphere/gpu/hillaire/hillaire_common.glsl"

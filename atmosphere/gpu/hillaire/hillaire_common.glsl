@@ -7,8 +7,8 @@
 
 Real3 transmittance_lookup(IN(Atmosphere) atmosphere, Real r, Real mu);
 Real mie_column_lookup(IN(Atmosphere) atmosphere, Real r, Real mu);
-Real3 multiple_scattering_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s, int part);
-Real3 scattering_order_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s, int part);
+Real3 multiple_scattering_lookup(Real u, Real v, int part);
+Real3 scattering_order_lookup(Real u, Real v, int part);
 Real3 ground_order_lookup(IN(Atmosphere) atmosphere, Real mu_s);
 Real forward_gain_lookup(IN(Atmosphere) atmosphere, Real nu, Real tau);
 
@@ -54,9 +54,7 @@ vec3 sample_part(sampler2D table, float u, float v, int part, int rows) {
 // its parts over n rows, and the ground's irradiance in row n.
 layout(binding = 7) uniform sampler2D u_previous_order;
 
-Real3 scattering_order_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s, int part) {
-  float u, v;
-  multiple_scattering_lut_uv_from_r_mu_s(atmosphere, r, mu_s, u, v);
+Real3 scattering_order_lookup(Real u, Real v, int part) {
   return sample_part(u_previous_order, u, v, part, kMultipleScatteringLutHeight + 1);
 }
 
@@ -66,24 +64,18 @@ Real3 ground_order_lookup(IN(Atmosphere) atmosphere, Real mu_s) {
   return texture(u_previous_order, vec2(u / float(kFieldParts), (n + 0.5) / (n + 1.0))).rgb;
 }
 #else
-Real3 scattering_order_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s, int part) {
-  return vec3(0.0);
-}
+Real3 scattering_order_lookup(Real u, Real v, int part) { return vec3(0.0); }
 Real3 ground_order_lookup(IN(Atmosphere) atmosphere, Real mu_s) { return vec3(0.0); }
 #endif
 
 #if defined(TRANSMITTANCE_PASS) || defined(MULTIPLE_SCATTERING_PASS) || \
     defined(SCATTERING_ORDERS_PASS)
 // The multiple-scattering pass computes the LUT this would read.
-Real3 multiple_scattering_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s, int part) {
-  return vec3(0.0);
-}
+Real3 multiple_scattering_lookup(Real u, Real v, int part) { return vec3(0.0); }
 #else
 layout(binding = 3) uniform sampler2D u_multiple_scattering_lut;
 
-Real3 multiple_scattering_lookup(IN(Atmosphere) atmosphere, Real r, Real mu_s, int part) {
-  float u, v;
-  multiple_scattering_lut_uv_from_r_mu_s(atmosphere, r, mu_s, u, v);
+Real3 multiple_scattering_lookup(Real u, Real v, int part) {
   return sample_part(u_multiple_scattering_lut, u, v, part, kMultipleScatteringLutHeight);
 }
 #endif

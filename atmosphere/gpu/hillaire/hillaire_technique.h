@@ -8,7 +8,7 @@
 // scattering one by one on the paper's 2D table (technique "hillaire"), or
 // takes the paper's Psi_ms = L_2 / (1 - f_ms) (technique "hillaire2020");
 // the first also carries the glow of sunlight that the air scatters
-// forward along the sun's path, past the table's second moment (a
+// forward along the sun's path, past the table's degree (a
 // forward-gain LUT). See hillaire_functions.glsl for why.
 #include "atmosphere/gpu/technique.h"
 #include "render/gl/program.h"
@@ -62,7 +62,7 @@ class HillaireTechnique final : public AtmosphereTechnique {
   GLuint transmittance_lut() const { return transmittance_lut_.id(); }
   GLuint multiple_scattering_lut() const { return multiple_scattering_lut_.id(); }
   // The multiple-scattering LUT is kFieldParts tables of w x h side by side
-  // (the moments of FieldMoments; w = kMultipleScatteringLutWidth over mu_s,
+  // (the terms of FieldMoments; w = kMultipleScatteringLutWidth over mu_s,
   // h = kMultipleScatteringLutHeight over altitude). Order n = 1 ...
   // kScatteringOrders of the last frame: the same parts over h rows, and
   // E_n in the first w texels of row h; not filled with the paper's LUT.
@@ -81,11 +81,12 @@ class HillaireTechnique final : public AtmosphereTechnique {
  private:
   Settings settings_;
   AtmosphereModel model_;
-  Program transmittance_program_, multiple_scattering_program_, orders_program_,
-      orders_sum_program_, forward_gain_program_, sky_view_program_, aerial_program_, sky_program_;
+  Program transmittance_program_, multiple_scattering_program_, first_order_program_,
+      next_order_program_, orders_sum_program_, forward_gain_program_, sky_view_program_,
+      aerial_program_, sky_program_;
   Texture transmittance_lut_, multiple_scattering_lut_, ground_irradiance_lut_, forward_gain_lut_,
       sky_view_lut_, aerial_scattering_, aerial_transmittance_;
-  std::array<Texture, 4> order_luts_;  // kScatteringOrders
+  std::array<Texture, 6> order_luts_;  // kScatteringOrders
   Buffer block_;
   VertexArray empty_vao_;
   bool prepared_ = false;  // prepare() ran since the last render()

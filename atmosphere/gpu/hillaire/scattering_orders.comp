@@ -9,21 +9,24 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform writeonly image2D u_order;
 
-uniform bool u_first_order;
 
 void main() {
   ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
   const int w = kMultipleScatteringLutWidth, h = kMultipleScatteringLutHeight;
   if (texel.x >= w || texel.y > h) return;
   Atmosphere atmosphere = block_atmosphere();
-  int source_kind = u_first_order ? kSourceFirstOrder : kSourceNextOrder;
+#ifdef FIRST_ORDER
+  const int source_kind = kSourceFirstOrder;
+#else
+  const int source_kind = kSourceNextOrder;
+#endif
   float u = (float(texel.x) + 0.5) / float(w);
   float r, mu_s;
   if (texel.y == h) {
     multiple_scattering_lut_r_mu_s_from_uv(atmosphere, u, 0.5 / float(h), r, mu_s);
     FieldMoments e =
         gather_order(atmosphere, ground_gather_radius(atmosphere), mu_s, source_kind, true);
-    imageStore(u_order, texel, vec4(e.mean, 1.0));
+    imageStore(u_order, texel, vec4(e.part[kFieldMean], 1.0));
   } else {
     multiple_scattering_lut_r_mu_s_from_uv(atmosphere, u, (float(texel.y) + 0.5) / float(h), r,
                                            mu_s);

@@ -1,4 +1,4 @@
-// The multiple-scattering LUT (mean and moment, side by side) and the
+// The multiple-scattering LUT (its kFieldParts terms side by side) and the
 // ground's sky irradiance as the sums of the orders that
 // scattering_orders.comp computed, with their geometric tails
 // (with_geometric_tail in hillaire_functions.glsl).
