@@ -664,6 +664,23 @@ void add_to_moments(INOUT(FieldMoments) f, IN(Real3) l, IN(Real3) d, bool ground
   for (int k = 0; k < kFieldParts; ++k) f.part[k] += field_basis(k, d.x, d.y, d.z) * l;
 }
 
+// The azimuths of row j of n, over [0, pi] alone: the light is the same
+// along the mirror image of a direction in the sun's vertical plane
+// (y -> -y) and the moments are even in y, so that azimuths pair off and
+// one of each pair counts twice (`mirror`); 0 and pi are their own images.
+// Rows alternate between (i + 1/2) 2 pi / n and i 2 pi / n. With n = 8,
+// cos(4 phi) is zero on every azimuth of the first kind and one in size on
+// the second; alternating, the degree-4 terms come out right on average,
+// as they do with 12 or 16 azimuths a row (Mars sunset 7.9 / 7.6 / 5.4 %
+// with the first kind alone, 7.0 / 6.6 / 4.8 % with 12 or 16 a row).
+int traced_azimuths(int j, int n) { return (j & 1) == 0 ? n / 2 : n / 2 + 1; }
+
+Real row_azimuth(int j, int i, int n, OUT(Real) mirror) {
+  bool offset = (j & 1) == 0;
+  mirror = offset || (i > 0 && i < n / 2) ? Real(2.0) : Real(1.0);
+  return Real(2.0) * kPi * (Real(i) + (offset ? Real(0.5) : Real(0.0))) / Real(n);
+}
+
 // The cosine to the sun of row j of n whose shares of Henyey-Greenstein's
 // g are equal: its inverse distribution at the row's middle.
 Real henyey_greenstein_row_cosine(Real g, int j, int n) {
@@ -697,11 +714,11 @@ FieldMoments gather_order(IN(Atmosphere) atmosphere, Real r, Real mu_s, int sour
   for (int j = 0; j < n; ++j) {
     Real weight;
     Real cos_theta = gather_row_cosine(atmosphere, r, j, n, ground_irradiance, weight);
-    // The light is the same along the mirror image of a direction in the
-    // sun's vertical plane (y -> -y), and the moments are even in y: the
-    // azimuths (i + 1/2) 2 pi / n pair off, and half of them count twice.
-    for (int i = 0; i < n / 2; ++i) {
-      Real3 d = gather_direction(cos_theta, i, n);
+    Real sin_theta = safe_sqrt(Real(1.0) - cos_theta * cos_theta);
+    for (int i = 0; i < traced_azimuths(j, n); ++i) {
+      Real mirror;
+      Real phi = row_azimuth(j, i, n, mirror);
+      Real3 d = Real3(sin_theta * cos(phi), sin_theta * sin(phi), cos_theta);
       Real t_end;
       bool hits_ground;
       ray_extent_inside(atmosphere, o, d, t_end, hits_ground);
@@ -709,7 +726,7 @@ FieldMoments gather_order(IN(Atmosphere) atmosphere, Real r, Real mu_s, int sour
       integrate_scattering(atmosphere, o, d, Real(0.0), t_end, sun_dir, kMultipleScatteringSteps,
                            kind, hits_ground && !ground_irradiance, luminance, transmittance,
                            f_ms);
-      add_to_moments(f, (Real(2.0) * weight / Real(n)) * luminance, d, ground_irradiance);
+      add_to_moments(f, (mirror * weight / Real(n)) * luminance, d, ground_irradiance);
     }
   }
   if (first_order) {
@@ -724,14 +741,9 @@ FieldMoments gather_order(IN(Atmosphere) atmosphere, Real r, Real mu_s, int sour
       Real nu = henyey_greenstein_row_cosine(g, j, n);
       Real sin_nu = safe_sqrt(Real(1.0) - nu * nu);
       Real weight = Real(1.5) * (Real(1.0) + nu * nu) / (Real(2.0) + g * g);
-      // Azimuths offset by half a column every other row, so that no two
-      // rows line up: (i + 1/2) 2 pi / n, then i 2 pi / n. As for the rows
-      // above, mirror images pair off; 0 and pi are their own.
-      bool offset = (j & 1) == 0;
-      for (int i = 0; i <= n / 2; ++i) {
-        if (offset && i == n / 2) continue;
-        Real phi = Real(2.0) * kPi * (Real(i) + (offset ? Real(0.5) : Real(0.0))) / Real(n);
-        Real mirror = offset || (i > 0 && i < n / 2) ? Real(2.0) : Real(1.0);
+      for (int i = 0; i < traced_azimuths(j, n); ++i) {
+        Real mirror;
+        Real phi = row_azimuth(j, i, n, mirror);
         Real3 d = nu * sun_dir + sin_nu * (cos(phi) * side + sin(phi) * across);
         if (ground_irradiance && d.z <= Real(0.0)) continue;
         Real t_end;

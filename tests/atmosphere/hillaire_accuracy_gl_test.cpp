@@ -94,8 +94,8 @@ TEST_P(HillaireAccuracyGLTest, MatchesTheGroundTruth) {
 
 // The orders of scattering (with the forward gain) against the paper's
 // 1 / (1 - f_ms), where the difference is well above the references'
-// noise. Measured (worst channel): noon 1.00 vs 7.33 %, twilight 4.06 vs
-// 33.6 %, Mars noon 2.65 vs 33.1 %.
+// noise. Measured (worst channel): noon 1.00 vs 7.33 %, twilight 3.99 vs
+// 33.6 %, Mars noon 2.64 vs 33.1 %.
 TEST_F(HillaireAccuracyGLTest, ScatteringOrdersBeatThePapersSeries) {
   for (auto [name, spp] : {std::pair{"earth_noon", 262144}, std::pair{"earth_twilight", 262144},
                            std::pair{"mars_noon", 524288}}) {
@@ -118,7 +118,7 @@ INSTANTIATE_TEST_SUITE_P(CanonicalScenes, HillaireAccuracyGLTest,
                                            AccuracyCase{"earth_sunset", 262144, 0.029},
                                            AccuracyCase{"earth_twilight", 262144, 0.049},
                                            AccuracyCase{"mars_noon", 524288, 0.032},
-                                           AccuracyCase{"mars_sunset", 1048576, 0.096}),
+                                           AccuracyCase{"mars_sunset", 1048576, 0.085}),
                          [](const auto& test_info) { return std::string(test_info.param.scene); });
 
 // Every canonical scene with an atmosphere, dense and strongly forward
