@@ -124,23 +124,28 @@ void main() {
   // near the limb 5-8 % too bright.
   if (depth > 0.0 && hits_ground) t_surface = min(t_surface, t_ground_near);
 
+  // Froxels near, the per-pixel march beyond; blended over the last fifth
+  // of the volume's range so that no edge shows on the ground.
+  float blend = smoothstep(0.8 * u_aerial_range, u_aerial_range, t_surface);
+  // One march serves both paths: in front of a surface they march the
+  // same range. (llvmpipe runs both sides of a branch on a uniform: with a
+  // march on each side, the sky pass at 400 km took 10 % longer.)
+  vec3 march_luminance = vec3(0.0), march_transmittance = vec3(1.0);
+  if (u_lut_weight < 1.0 || (depth > 0.0 && blend > 0.0)) {
+    float t_max = depth > 0.0 ? t_surface : (hits_ground ? t_ground_near : kFar);
+    march(camera, dir, t_max, depth == 0.0 && hits_ground, march_luminance, march_transmittance);
+  }
+
   vec3 lut_radiance = vec3(0.0);
   if (u_lut_weight > 0.0) {
     if (depth > 0.0) {
-      // Froxels near, the per-pixel march beyond; blended over the last
-      // fifth of the volume's range so that no edge shows on the ground.
-      float blend = smoothstep(0.8 * u_aerial_range, u_aerial_range, t_surface);
-      vec3 near_radiance = vec3(0.0), far_radiance = vec3(0.0);
+      vec3 near_radiance = vec3(0.0);
       if (blend < 1.0) {
         vec3 scattering, transmittance;
         froxel(t_surface, scattering, transmittance);
         near_radiance = scattering + transmittance * surface;
       }
-      if (blend > 0.0) {
-        vec3 luminance, transmittance;
-        march(camera, dir, t_surface, false, luminance, transmittance);
-        far_radiance = luminance + transmittance * surface;
-      }
+      vec3 far_radiance = march_luminance + march_transmittance * surface;
       lut_radiance = mix(near_radiance, far_radiance, blend);
     } else {
       vec3 local = u_local_from_atmo * dir;
@@ -154,14 +159,8 @@ void main() {
     }
   }
 
-  vec3 march_radiance = vec3(0.0);
-  if (u_lut_weight < 1.0) {
-    float t_max = depth > 0.0 ? t_surface : (hits_ground ? t_ground_near : kFar);
-    vec3 luminance, transmittance;
-    march(camera, dir, t_max, depth == 0.0 && hits_ground, luminance, transmittance);
-    march_radiance = luminance + transmittance * surface;
-    if (open_sky) march_radiance += sun_disk(dir, transmittance);
-  }
+  vec3 march_radiance = march_luminance + march_transmittance * surface;
+  if (open_sky) march_radiance += sun_disk(dir, march_transmittance);
 
   vec3 radiance = mix(march_radiance, lut_radiance, u_lut_weight);
   // Within half-float range, so that a 16-bit target cannot overflow.
