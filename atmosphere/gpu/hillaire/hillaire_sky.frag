@@ -128,8 +128,9 @@ void main() {
   // of the volume's range so that no edge shows on the ground.
   float blend = smoothstep(0.8 * u_aerial_range, u_aerial_range, t_surface);
   // One march serves both paths: in front of a surface they march the
-  // same range. (llvmpipe runs both sides of a branch on a uniform: with a
-  // march on each side, the sky pass at 400 km took 10 % longer.)
+  // same range. llvmpipe runs both sides of a branch on a uniform; with a
+  // march on each side the sky pass took 130 ms on the ground (now 84) and
+  // 774 ms at 400 km (now 737).
   vec3 march_luminance = vec3(0.0), march_transmittance = vec3(1.0);
   if (u_lut_weight < 1.0 || (depth > 0.0 && blend > 0.0)) {
     float t_max = depth > 0.0 ? t_surface : (hits_ground ? t_ground_near : kFar);

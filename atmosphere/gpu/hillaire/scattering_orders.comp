@@ -2,13 +2,12 @@
 // orders" in hillaire_functions.glsl): rows 0 to h-1 hold the order's
 // moments (FieldMoments: kFieldParts parts side by side) over
 // (mu_s, r), row h the ground's irradiance E_n over mu_s. The first order
-// comes from the sun, every later one from the order before
-// (u_previous_order, the same layout).
+// comes from the sun (compiled with FIRST_ORDER), every later one from the
+// order before (u_previous_order, the same layout).
 #include "atmosphere/gpu/hillaire/hillaire_common.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform writeonly image2D u_order;
-
 
 void main() {
   ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
