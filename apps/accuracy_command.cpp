@@ -28,16 +28,6 @@ struct AccuracyArgs {
   int width = 64, height = 32;
 };
 
-// The reference at `spp` shares its first spp/4 paths per pixel with the
-// one at spp/4, so their difference has variance (3/4) sigma^2 / (spp/4):
-// the noise of the spp render is that RMS / sqrt(3/4) / 2.
-std::array<double, 3> reference_noise(const Scene& scene, const ImageRGB& reference, int spp) {
-  ImageRGB quarter = reference_image(scene, spp / 4);
-  std::array<double, 3> d = rms_difference(reference, quarter, sun_disk_mask(scene));
-  for (double& v : d) v = v / std::sqrt(0.75) / 2.0;
-  return d;
-}
-
 // Small images repeated pixel by pixel up to at least 256 columns, so that
 // a 32x16 comparison can be looked at.
 ImageRGB enlarged(const ImageRGB& image) {
@@ -87,10 +77,12 @@ void run_accuracy(const AccuracyArgs& args) {
     scene.height = args.height;
     Body body = scene_body(scene);
     if (!body.has_atmosphere()) continue;
-    ImageRGB reference = reference_image(scene, args.spp);
+    ReferenceRender ground_truth = reference_render(scene, args.spp);
+    const ImageRGB& reference = ground_truth.image;
     ImageRGB technique = render_scene_with(scene, args.technique);
     TechniqueAccuracy accuracy = measure_accuracy(scene, technique, reference);
-    std::array<double, 3> noise = reference_noise(scene, reference, args.spp);
+    // The reference's own noise: the RMS of its per-pixel standard error.
+    std::array<double, 3> noise = masked_rms(ground_truth.noise, sun_disk_mask(scene));
     const char* names[3] = {"R", "G", "B"};
     for (size_t c = 0; c < 3; ++c) {
       const ChannelError& e = accuracy.channels[c];

@@ -86,9 +86,10 @@ void run_sky(const ProbeArgs& args) {
   std::printf("%15s %15s %15s\n", "wavelength_nm", "radiance", "std_error");
   glm::dvec3 rgb(0.0);
   TraceOptions options;
+  const ColumnTable table(medium);
   for (size_t i = 0; i < medium.channels.size(); ++i) {
     RadianceEstimate e =
-        estimate_radiance(medium, i, origin, view, sun, options, args.paths, 0x5eed + i);
+        estimate_radiance(table, i, origin, view, sun, options, args.paths, 0x5eed + i);
     std::printf("%15.0f %15.6g %15.2g\n", medium.channels[i].wavelength_nm, e.mean, e.std_error);
     rgb += e.mean * medium.channels[i].rgb_weight;
   }

@@ -2,10 +2,12 @@
 // linear EXR (and a tone-mapped PNG beside it), through the reference cache.
 #include "apps/commands.h"
 #include "render/reference_cache.h"
+#include "render/technique_accuracy.h"
 #include "sim/error.h"
 
 #include <fmt/format.h>
 
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <string>
@@ -42,9 +44,10 @@ void run_reference(const ReferenceArgs& args) {
   bool was_cached = std::filesystem::exists(cached);
   bool terminal = isatty(fileno(stderr)) && !args.quiet;
   auto start = std::chrono::steady_clock::now();
-  ImageRGB image = reference_image(scene, args.spp, mode, [&](double done) {
+  ReferenceRender render = reference_render(scene, args.spp, mode, [&](double done) {
     if (terminal) std::fprintf(stderr, "\rreference %s: %3.0f%%", scene.name.c_str(), 100 * done);
   });
+  const ImageRGB& image = render.image;
   if (terminal && !was_cached) std::fprintf(stderr, "\n");
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::filesystem::path out(args.out);
@@ -57,6 +60,12 @@ void run_reference(const ReferenceArgs& args) {
               scene.width, scene.height, args.spp, args.mode.c_str(),
               was_cached ? "from the cache" : "rendered", seconds,
               was_cached ? 0.0 : paths / seconds);
+  // The render's own noise: the RMS of its per-pixel standard error over
+  // the mean radiance, sun disk excluded, as `planet accuracy` gives it.
+  std::vector<uint8_t> mask = sun_disk_mask(scene);
+  std::array<double, 3> noise = masked_rms(render.noise, mask), mean = masked_mean(image, mask);
+  std::printf("noise (standard error, RMS over the mean): R %.3f%% G %.3f%% B %.3f%%\n",
+              100 * noise[0] / mean[0], 100 * noise[1] / mean[1], 100 * noise[2] / mean[2]);
   std::printf("wrote %s and %s (exposure %g); cache %s\n", out.string().c_str(),
               png.string().c_str(), scene.exposure, cached.string().c_str());
 }

@@ -128,22 +128,36 @@ void write_tone_mapped_png(const std::filesystem::path& file, const ImageRGB& im
   write_png(file, image.width, image.height, rgba);
 }
 
-ImageRGB reference_image(const Scene& scene, int spp, ReferenceMode mode,
-                         const std::function<void(double)>& progress) {
+std::filesystem::path reference_noise_file(const std::filesystem::path& reference_file) {
+  return std::filesystem::path(reference_file).replace_extension(".noise.exr");
+}
+
+ReferenceRender reference_render(const Scene& scene, int spp, ReferenceMode mode,
+                                 const std::function<void(double)>& progress) {
   Body body = scene_body(scene);
   AtmosphereModel model = scene_atmosphere(scene, body);
   std::filesystem::path file = reference_cache_file(scene, model, spp, mode);
-  if (std::filesystem::exists(file)) return read_image_rgb(file);
+  std::filesystem::path noise_file = reference_noise_file(file);
+  if (std::filesystem::exists(file) && std::filesystem::exists(noise_file)) {
+    return {read_image_rgb(file), read_image_rgb(noise_file)};
+  }
   ReferenceSettings settings;
   settings.spp = spp;
   settings.seed = scene.seed();
   settings.progress = progress;
   ReferenceImage image =
       render_reference(make_medium(model, mode), reference_view(scene, body, model), settings);
-  ImageRGB out = to_image_rgb(image);
+  ReferenceRender out{to_image_rgb(image), {image.width, image.height, image.noise}};
   std::filesystem::create_directories(file.parent_path());
-  write_exr(file, out);
+  // The noise first: a reference in the cache always has its noise.
+  write_exr(noise_file, out.noise);
+  write_exr(file, out.image);
   return out;
+}
+
+ImageRGB reference_image(const Scene& scene, int spp, ReferenceMode mode,
+                         const std::function<void(double)>& progress) {
+  return reference_render(scene, spp, mode, progress).image;
 }
 
 }  // namespace planet

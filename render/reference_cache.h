@@ -18,7 +18,7 @@
 namespace planet {
 
 // Bumped whenever the tracer's output for the same inputs changes.
-constexpr int kReferenceVersion = 4;
+constexpr int kReferenceVersion = 5;
 
 std::filesystem::path reference_cache_dir();
 
@@ -28,9 +28,21 @@ std::string reference_key(const Scene& scene, const AtmosphereModel& model, int 
 std::filesystem::path reference_cache_file(const Scene& scene, const AtmosphereModel& model,
                                            int spp, ReferenceMode mode);
 
-// The scene's reference image in linear sRGB radiance (rows top-down): read
-// from the cache, or rendered on all cores and cached. `progress` sees the
-// fraction done while rendering.
+// The standard error of each pixel of a cached reference (render/
+// path_tracer.h, kReplicates) sits beside it in this file.
+std::filesystem::path reference_noise_file(const std::filesystem::path& reference_file);
+
+struct ReferenceRender {
+  ImageRGB image;  // linear sRGB radiance, rows top-down
+  ImageRGB noise;  // its standard error per pixel and channel
+};
+
+// The scene's reference and its noise: read from the cache, or rendered on
+// all cores and cached. `progress` sees the fraction done while rendering.
+ReferenceRender reference_render(const Scene& scene, int spp,
+                                 ReferenceMode mode = ReferenceMode::kRgb,
+                                 const std::function<void(double)>& progress = {});
+// The reference image alone.
 ImageRGB reference_image(const Scene& scene, int spp, ReferenceMode mode = ReferenceMode::kRgb,
                          const std::function<void(double)>& progress = {});
 

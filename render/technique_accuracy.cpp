@@ -124,21 +124,34 @@ TechniqueAccuracy measure_accuracy(const Scene& scene, const ImageRGB& technique
   return result;
 }
 
-std::array<double, 3> rms_difference(const ImageRGB& a, const ImageRGB& b,
-                                     const std::vector<uint8_t>& mask) {
-  check_sizes(a, b);
-  std::array<double, 3> sum_sq{};
+namespace {
+
+// Sums of f(value) per channel over the pixels the mask leaves in, over
+// their count.
+template <class F>
+std::array<double, 3> masked_average(const ImageRGB& image, const std::vector<uint8_t>& mask,
+                                     F f) {
+  std::array<double, 3> sum{};
   int n = 0;
   for (size_t i = 0; i < mask.size(); ++i) {
     if (mask[i]) continue;
     ++n;
-    for (size_t c = 0; c < 3; ++c) {
-      double d = double(a.pixels[i * 3 + c]) - double(b.pixels[i * 3 + c]);
-      sum_sq[c] += d * d;
-    }
+    for (size_t c = 0; c < 3; ++c) sum[c] += f(double(image.pixels[i * 3 + c]));
   }
-  for (auto& s : sum_sq) s = std::sqrt(s / std::max(n, 1));
-  return sum_sq;
+  for (auto& s : sum) s /= std::max(n, 1);
+  return sum;
+}
+
+}  // namespace
+
+std::array<double, 3> masked_rms(const ImageRGB& image, const std::vector<uint8_t>& mask) {
+  std::array<double, 3> mean_square = masked_average(image, mask, [](double v) { return v * v; });
+  for (auto& s : mean_square) s = std::sqrt(s);
+  return mean_square;
+}
+
+std::array<double, 3> masked_mean(const ImageRGB& image, const std::vector<uint8_t>& mask) {
+  return masked_average(image, mask, [](double v) { return v; });
 }
 
 }  // namespace planet

@@ -44,9 +44,9 @@ std::vector<uint8_t> ground_mask(const Scene& scene);
 TechniqueAccuracy measure_accuracy(const Scene& scene, const ImageRGB& technique,
                                    const ImageRGB& reference);
 
-// RMSE per channel of the difference of two images over the pixels the
-// mask leaves in (mask 0), e.g. two references for their noise.
-std::array<double, 3> rms_difference(const ImageRGB& a, const ImageRGB& b,
-                                     const std::vector<uint8_t>& mask);
+// RMS and mean per channel over the pixels the mask leaves in (mask 0):
+// e.g. a reference's per-pixel standard error, and its radiance.
+std::array<double, 3> masked_rms(const ImageRGB& image, const std::vector<uint8_t>& mask);
+std::array<double, 3> masked_mean(const ImageRGB& image, const std::vector<uint8_t>& mask);
 
 }  // namespace planet

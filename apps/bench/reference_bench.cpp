@@ -15,8 +15,8 @@ void BM_ReferenceEarthNoon(benchmark::State& state, ReferenceMode mode, int thre
   Medium medium = make_medium(model, mode);
   ReferenceView view = reference_view(scene, body, model);
   ReferenceSettings settings;
-  // One path per channel per pixel: 3 (RGB) or 21 (spectral) per pixel.
-  settings.spp = int(medium.channels.size());
+  // One path per channel and replicate per pixel: 6 (RGB) or 42 (spectral).
+  settings.spp = kReplicates * int(medium.channels.size());
   settings.threads = threads;
   settings.seed = scene.seed();
   int64_t paths = 0;

@@ -2,21 +2,32 @@
 // The ground truth: a CPU volumetric path tracer in double precision over a
 // spherical atmosphere (Medium) with a Lambertian ground.
 //
-// Per path, one channel (wavelength). Each segment is tracked through the
-// tentative collisions of the channel's majorant (Woodcock et al. 1965):
-// the sun's direct light is gathered along the whole segment by next-event
-// estimation toward a point sampled uniformly on the sun disk, weighted by
-// ratio-tracked transmittance (Novak et al. 2014) and zero inside the
-// planet's shadow; the path itself continues by analog delta tracking
-// (absorption ends it, scattering picks Rayleigh or Mie in proportion and a
-// direction sampled exactly from that phase function: Rayleigh or
-// Cornette-Shanks), through unlimited orders. The ground is Lambertian and
-// reflects with its albedo as the Russian roulette survival probability, so
-// every path keeps weight 1 and ends by escaping, absorption or roulette.
+// Per path, one channel (wavelength). Every transmittance is exact to the
+// column table's interpolation (reference/columns.h): along a segment, the
+// difference of two lookups; toward the sun, one (zero inside the planet's
+// shadow). On each segment of a path (the camera ray, then one per
+// scattering or reflection):
+// - the sun's light scattered once along it is estimated at one point,
+//   drawn from a table of that light along the segment, toward a point
+//   sampled uniformly on the sun disk; the sunlit ground at its end and the
+//   disk itself are added with the segment's transmittance;
+// - the path goes on. A segment toward space is forced to collide, the
+//   path's weight taking the chance that it does; one toward the ground
+//   collides or reaches the ground by that chance. The collision point is
+//   drawn in proportion to transmittance times extinction, and the weight
+//   takes the single-scattering albedo; the ground takes its albedo. The
+//   next direction comes from the phase function or from a lobe about the
+//   sun (multiple importance sampling). Below a weight of 0.1 a path goes
+//   on by Russian roulette, through unlimited orders.
+// The first numbers of each path (two per segment and two per turn) come
+// from Owen-scrambled Sobol pairs (reference/sampling.h), so the paths of
+// a pixel are stratified over where they gather the sun, collide and turn.
 //
-// Deterministic: each (scene seed, pixel, sample) has its own random stream
-// (reference/sampling.h); pixels are independent and their samples are
-// summed in order, so a render has the same bits at any thread count.
+// Deterministic: each (scene seed, pixel, replicate, channel) has its own
+// scrambled sequence and each path its own random stream; pixels are
+// independent and their samples are summed in order, so a render has the
+// same bits at any thread count.
+#include "atmosphere/reference/columns.h"
 #include "atmosphere/reference/medium.h"
 #include "atmosphere/reference/sampling.h"
 
@@ -59,17 +70,25 @@ struct TraceOptions {
 };
 
 struct ReferenceSettings {
-  int spp = 64;      // paths per pixel, spread evenly over the channels
-  int threads = 0;   // 0: all cores
-  uint64_t seed = 0; // the scene's seed
+  int spp = 64;       // paths per pixel, spread evenly over replicates and channels
+  int threads = 0;    // 0: all cores
+  uint64_t seed = 0;  // the scene's seed
   TraceOptions trace;
   // Called now and then with the fraction of rows done.
   std::function<void(double)> progress;
 };
 
+// A render is the mean of two independent replicates (each its own
+// scrambling of the stratified sequences), and half their difference is
+// the standard error of that mean: its square's expectation is the mean's
+// variance. Stratified sampling makes the spread of the paths themselves
+// overstate the error, so the replicates are what measures it.
+constexpr int kReplicates = 2;
+
 struct ReferenceImage {
   int width = 0, height = 0;
-  std::vector<float> rgb;  // linear sRGB radiance, rows top-down
+  std::vector<float> rgb;    // linear sRGB radiance, rows top-down
+  std::vector<float> noise;  // its standard error per pixel and channel
   uint64_t paths = 0;
   double seconds = 0;
 };
@@ -79,24 +98,18 @@ ReferenceImage render_reference(const Medium& medium, const ReferenceView& view,
 
 // The radiance (per nm, in the units of the solar irradiance) arriving at
 // `origin` from direction -dir, in one channel: one path of `rng`'s stream.
-double trace_path(const Medium& medium, const MediumChannel& channel, glm::dvec3 origin,
+double trace_path(const ColumnTable& table, const MediumChannel& channel, glm::dvec3 origin,
                   glm::dvec3 dir, const glm::dvec3& sun_dir, const TraceOptions& options,
-                  reference::Rng& rng);
+                  reference::PathSampler& sampler);
 
 struct RadianceEstimate {
   double mean = 0;
   double std_error = 0;
 };
 // `paths` paths of one channel in one direction, streams seeded from `seed`.
-RadianceEstimate estimate_radiance(const Medium& medium, size_t channel,
+RadianceEstimate estimate_radiance(const ColumnTable& table, size_t channel,
                                    const glm::dvec3& origin, const glm::dvec3& dir,
                                    const glm::dvec3& sun_dir, const TraceOptions& options,
                                    int paths, uint64_t seed);
-
-// Transmittance from `origin` along `dir` to the top of the atmosphere (0
-// through the ground) by ratio tracking, one estimate.
-double ratio_tracking_transmittance(const Medium& medium, const MediumChannel& channel,
-                                    const glm::dvec3& origin, const glm::dvec3& dir,
-                                    reference::Rng& rng);
 
 }  // namespace planet

@@ -40,6 +40,74 @@ class Rng {
 
 constexpr double kPi = 3.14159265358979323846;
 
+// Stratified dimensions: Sobol's first two dimensions (a (0, 2)-sequence in
+// base 2), Owen-scrambled by hashing (Laine and Karras 2011; Burley 2020,
+// "Practical hash-based Owen scrambling"), with the sample index shuffled
+// per pair so that different pairs are not correlated ("padding", as in
+// pbrt-v4's PaddedSobolSampler). The first n points of every pair with n a
+// power of two are then stratified in every elementary interval of area 1/n.
+inline uint32_t reverse_bits(uint32_t x) {
+  x = (x << 16) | (x >> 16);
+  x = ((x & 0x00ff00ffu) << 8) | ((x & 0xff00ff00u) >> 8);
+  x = ((x & 0x0f0f0f0fu) << 4) | ((x & 0xf0f0f0f0u) >> 4);
+  x = ((x & 0x33333333u) << 2) | ((x & 0xccccccccu) >> 2);
+  return ((x & 0x55555555u) << 1) | ((x & 0xaaaaaaaau) >> 1);
+}
+
+// A random permutation of the 32-bit fractions in which each bit is
+// flipped or not by a hash of the bits above it: Owen's nested uniform
+// scramble. The multiplications make each bit depend on the lower ones, so
+// they run on the reversed bits.
+inline uint32_t owen_scramble(uint32_t x, uint32_t seed) {
+  x = reverse_bits(x);
+  x += seed;
+  x ^= x * 0x6c50b47cu;
+  x ^= x * 0xb82f1e52u;
+  x ^= x * 0xc7afe638u;
+  x ^= x * 0x8d22f6e6u;
+  return reverse_bits(x);
+}
+
+// Sobol's second dimension: its generator matrix is Pascal's triangle
+// mod 2, whose columns are v, v ^ (v >> 1), ... from the top bit.
+inline uint32_t sobol_second(uint32_t index) {
+  uint32_t v = 1u << 31, x = 0;
+  for (; index != 0; index >>= 1, v ^= v >> 1) {
+    if (index & 1u) x ^= v;
+  }
+  return x;
+}
+
+// Point `index` of the pair of dimensions scrambled by `seed`, in (0, 1)^2.
+inline glm::dvec2 stratified_pair(uint32_t index, uint64_t seed) {
+  uint64_t h = mix64(seed);
+  uint32_t i = owen_scramble(index, uint32_t(h));
+  uint32_t x = owen_scramble(reverse_bits(i), uint32_t(h >> 32));
+  uint32_t y = owen_scramble(sobol_second(i), uint32_t(mix64(h)));
+  return {(double(x) + 0.5) * 0x1p-32, (double(y) + 0.5) * 0x1p-32};
+}
+
+// The numbers of one path: its first kStratifiedPairs pairs from the
+// stratified sequence of its pixel and channel (`seed`), at its index in
+// that pixel's paths; everything else from its own random stream.
+class PathSampler {
+ public:
+  static constexpr int kStratifiedPairs = 8;
+  PathSampler(uint64_t seed, uint32_t index)
+      : seed_(seed), index_(index), rng_(Rng::for_sample(seed, index, 0)) {}
+  glm::dvec2 pair() {
+    if (pair_ < kStratifiedPairs) return stratified_pair(index_, seed_ + uint64_t(pair_++));
+    return {rng_.uniform(), rng_.uniform()};
+  }
+  Rng& rng() { return rng_; }
+
+ private:
+  uint64_t seed_;
+  uint32_t index_;
+  int pair_ = 0;
+  Rng rng_;
+};
+
 // A unit vector at angle acos(mu) from `axis`, at azimuth phi about it.
 inline glm::dvec3 direction_about(const glm::dvec3& axis, double mu, double phi) {
   // Duff et al. 2017, "Building an orthonormal basis, revisited".
@@ -74,11 +142,16 @@ inline double sample_henyey_greenstein_mu(double g, double u) {
 // 3 (1 + mu^2) / (2 (2 + g^2)), at most 3 / (2 + g^2), so accepting a
 // Henyey-Greenstein sample with probability (1 + mu^2) / 2 leaves exactly
 // the Cornette-Shanks distribution (acceptance (2 + g^2) / 3 on average).
-inline double sample_cornette_shanks_mu(double g, Rng& rng) {
-  for (;;) {
-    double mu = sample_henyey_greenstein_mu(g, rng.uniform());
+// `first` is the first try's number (a stratified one); the rest are
+// drawn from `rng`.
+inline double sample_cornette_shanks_mu(double g, double first, Rng& rng) {
+  for (double u = first;; u = rng.uniform()) {
+    double mu = sample_henyey_greenstein_mu(g, u);
     if (2.0 * rng.uniform() < 1.0 + mu * mu) return mu;
   }
+}
+inline double sample_cornette_shanks_mu(double g, Rng& rng) {
+  return sample_cornette_shanks_mu(g, rng.uniform(), rng);
 }
 
 // A direction uniform in the cone of half-angle alpha about `axis`
