@@ -66,6 +66,7 @@ ColumnTable::ColumnTable(const Medium& medium, int r_size, int mu_size)
   }
   std::erase_if(breaks_, [&](double h) { return !(h > 0.0 && h < top - bottom); });
   std::sort(breaks_.begin(), breaks_.end());
+  step_ = 4.0 * least_scale_height(medium);
 
   texels_.resize(size_t(r_size) * size_t(mu_size));
   auto fill_rows = [&](int first, int step) {
@@ -98,17 +99,16 @@ glm::dvec3 ColumnTable::integrate_to_top(double r, double mu) const {
   // above the ground.
   double r_p = r * std::sqrt(std::max(1.0 - mu * mu, 0.0));
   if (mu < 0.0) r_p = std::max(r_p, bottom);
-  const double step = 4.0 * least_scale_height(medium_);
   auto altitude_to_s = [&](double h) { return std::sqrt(std::max(bottom + h - r_p, 0.0)); };
   // Integral from the point at altitude h0 up to altitude h1 along the
-  // ray's rising part, over pieces of at most `step` in altitude and
+  // ray's rising part, over pieces of at most step_ in altitude and
   // broken at every kink.
   auto rising = [&](double h0, double h1) {
     glm::dvec3 sum(0.0);
     double lo = h0;
     auto next_break = std::upper_bound(breaks_.begin(), breaks_.end(), h0);
     while (lo < h1) {
-      double hi = std::min(lo + step, h1);
+      double hi = std::min(lo + step_, h1);
       if (next_break != breaks_.end() && *next_break < hi) hi = *next_break++;
       double s0 = altitude_to_s(lo), s1 = altitude_to_s(hi);
       double half = 0.5 * (s1 - s0), mid = 0.5 * (s1 + s0);

@@ -49,6 +49,7 @@ class ColumnTable {
   int r_size_, mu_size_;
   double horizon_;              // sqrt(top^2 - bottom^2): the horizon ray's length from the top
   std::vector<double> breaks_;  // altitudes where a profile has a kink
+  double step_ = 0;             // the rule's largest piece, in altitude
   std::vector<glm::dvec3> texels_;
 };
 

@@ -17,17 +17,6 @@ ReferenceMode parse_reference_mode(const std::string& text) {
   throw InputError(fmt::format("'{}' is not a reference mode (rgb, spectral)", text));
 }
 
-namespace {
-
-void finish_channel(MediumChannel& c) {
-  // Densities are clamped to [0, 1] (DensityProfile::density), so the sum
-  // of the coefficients bounds the extinction everywhere.
-  c.majorant = c.rayleigh_scattering + c.mie_scattering + c.mie_absorption +
-               c.absorber_absorption;
-}
-
-}  // namespace
-
 Medium make_medium(const AtmosphereModel& model, ReferenceMode mode) {
   Medium m;
   m.bottom_radius = model.bottom_radius;
@@ -48,7 +37,6 @@ Medium make_medium(const AtmosphereModel& model, ReferenceMode mode) {
       c.absorber_absorption = model.absorber.extinction()[i];
       c.solar_irradiance = model.solar_irradiance[i];
       c.rgb_weight[i] = 1.0;
-      finish_channel(c);
       m.channels.push_back(c);
     }
     return m;
@@ -67,7 +55,6 @@ Medium make_medium(const AtmosphereModel& model, ReferenceMode mode) {
     c.absorber_absorption = s.absorber_absorption[i];
     c.solar_irradiance = s.solar_irradiance[i];
     c.rgb_weight = weights[i];
-    finish_channel(c);
     m.channels.push_back(c);
   }
   return m;

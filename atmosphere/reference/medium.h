@@ -3,7 +3,7 @@
 // density profiles, and its coefficients at a list of channels. A channel is
 // one wavelength: the three RGB wavelengths of the real-time techniques, or
 // the model's spectral samples. Every path carries a single channel, so
-// that free-flight sampling is exact (one scalar majorant per channel) and
+// that collisions are drawn by one scalar optical depth per channel and
 // the spectral and RGB modes share every line of the tracer.
 #include "atmosphere/model.h"
 
@@ -27,9 +27,6 @@ struct MediumChannel {
   double mie_absorption = 0;
   double absorber_absorption = 0;
   double solar_irradiance = 0;  // W m^-2 nm^-1 at the top of the atmosphere
-  // An upper bound of the extinction anywhere in the shell (densities are
-  // clamped to [0, 1]): the majorant of delta and ratio tracking.
-  double majorant = 0;
   // This channel's share of linear sRGB: radiance L in this channel adds
   // L * rgb_weight to the pixel (see atmosphere/spectrum.h).
   glm::dvec3 rgb_weight{0.0};

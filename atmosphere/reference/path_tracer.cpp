@@ -68,10 +68,6 @@ constexpr double kRouletteBelow = 0.1;
 // Earth noon blue 0.22 / 0.25 / 0.27.
 constexpr double kSunward = 0.15;
 
-double henyey_greenstein(double g, double cos_theta) {
-  return (1.0 - g * g) / (4.0 * reference::kPi * std::pow(1.0 + g * g - 2.0 * g * cos_theta, 1.5));
-}
-
 // The optical depth from a segment's start along it, from the column
 // table. A ray that reaches the top is measured by the columns to the top
 // from its two ends; one that meets the ground, by the columns of the
@@ -279,14 +275,14 @@ double trace_path(const ColumnTable& table, const MediumChannel& c, glm::dvec3 o
         double phase = (co.scattering_rayleigh * shared::rayleigh_phase(mu) +
                         co.scattering_mie * shared::cornette_shanks_phase(g, mu)) /
                        co.scattering();
-        weight *= phase / (sunward * henyey_greenstein(g, glm::dot(next, sun_dir)) +
+        weight *= phase / (sunward * shared::henyey_greenstein_phase(g, glm::dot(next, sun_dir)) +
                            (1.0 - sunward) * phase);
       }
       dir = next;
     } else {
       weight *= m.ground_albedo;
       origin = normal * m.bottom_radius;
-      dir = reference::direction_about(normal, std::sqrt(turn.x), 2.0 * reference::kPi * turn.y);
+      dir = reference::sample_cosine(normal, turn);
     }
     if (weight < kRouletteBelow) {
       if (rng.uniform() * kRouletteBelow >= weight) return radiance;
@@ -364,6 +360,7 @@ ReferenceImage render_reference(const Medium& m, const ReferenceView& view,
           replicate[lane / channels] +=
               sum[lane] / count[lane] * m.channels[lane % channels].rgb_weight;
         }
+        static_assert(kReplicates == 2, "the mean and spread below are of two replicates");
         glm::dvec3 mean = 0.5 * (replicate[0] + replicate[1]);
         glm::dvec3 spread = 0.5 * glm::abs(replicate[0] - replicate[1]);
         for (int c = 0; c < 3; ++c) {

@@ -97,7 +97,8 @@ ReferenceImage render_reference(const Medium& medium, const ReferenceView& view,
                                 const ReferenceSettings& settings);
 
 // The radiance (per nm, in the units of the solar irradiance) arriving at
-// `origin` from direction -dir, in one channel: one path of `rng`'s stream.
+// `origin` from direction -dir, in one channel: one path, its numbers from
+// `sampler`.
 double trace_path(const ColumnTable& table, const MediumChannel& channel, glm::dvec3 origin,
                   glm::dvec3 dir, const glm::dvec3& sun_dir, const TraceOptions& options,
                   reference::PathSampler& sampler);

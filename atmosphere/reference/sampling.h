@@ -161,10 +161,14 @@ inline glm::dvec3 sample_cone(const glm::dvec3& axis, double cos_alpha, Rng& rng
   return direction_about(axis, mu, 2.0 * kPi * rng.uniform());
 }
 
-// Lambert: cosine-weighted about the normal, pdf mu / pi.
+// Lambert: cosine-weighted about the normal, pdf mu / pi, from two
+// numbers in [0, 1) (stratified ones in the path tracer).
+inline glm::dvec3 sample_cosine(const glm::dvec3& normal, const glm::dvec2& u) {
+  return direction_about(normal, std::sqrt(u.x), 2.0 * kPi * u.y);
+}
 inline glm::dvec3 sample_cosine(const glm::dvec3& normal, Rng& rng) {
-  double mu = std::sqrt(rng.uniform());
-  return direction_about(normal, mu, 2.0 * kPi * rng.uniform());
+  double u = rng.uniform();
+  return sample_cosine(normal, glm::dvec2(u, rng.uniform()));
 }
 
 }  // namespace planet::reference
