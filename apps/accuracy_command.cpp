@@ -24,7 +24,7 @@ namespace {
 struct AccuracyArgs {
   std::string technique = "hillaire", out;
   std::vector<std::string> scenes;
-  int spp = 4096;
+  std::string paths = "4096";
   int width = 64, height = 32;
 };
 
@@ -69,6 +69,7 @@ void run_accuracy(const AccuracyArgs& args) {
   } else {
     for (const auto& name : args.scenes) scenes.push_back(find_scene(name));
   }
+  PathBudget budget = PathBudget::parse(args.paths);
   auto context = GlContext::create_headless();
   std::printf("%-16s %-3s %11s %11s %9s %9s %9s %6s\n", "scene", "ch", "RMSE", "mean ref",
               "rel RMSE", "ref noise", "sky only", "bias");
@@ -77,7 +78,7 @@ void run_accuracy(const AccuracyArgs& args) {
     scene.height = args.height;
     Body body = scene_body(scene);
     if (!body.has_atmosphere()) continue;
-    ReferenceRender ground_truth = reference_render(scene, args.spp);
+    ReferenceRender ground_truth = reference_render(scene, budget);
     const ImageRGB& reference = ground_truth.image;
     ImageRGB technique = render_scene_with(scene, args.technique);
     TechniqueAccuracy accuracy = measure_accuracy(scene, technique, reference);
@@ -109,8 +110,8 @@ void add_accuracy_command(CLI::App& app) {
       "accuracy", "Measure an atmosphere technique against the path-traced ground truth");
   cmd->add_option("--technique", args->technique, "Atmosphere technique (default: hillaire)");
   cmd->add_option("--scene", args->scenes, "Canonical scenes (default: all with an atmosphere)");
-  cmd->add_option("--spp", args->spp, "Reference paths per pixel (cached)")
-      ->check(CLI::Range(4, 1 << 20));
+  cmd->add_option("--spp", args->paths,
+                  "Reference paths per pixel (cached): in all, or per channel (R,G,B)");
   cmd->add_option("--width", args->width, "Image width (default 64)")->check(CLI::Range(1, 4096));
   cmd->add_option("--height", args->height, "Image height (default 32)")
       ->check(CLI::Range(1, 4096));

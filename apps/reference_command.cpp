@@ -19,7 +19,7 @@ namespace {
 
 struct ReferenceArgs {
   std::string scene, out, mode = "rgb";
-  int spp = 256;
+  std::string paths = "256";
   int width = 0, height = 0;
   bool list = false, quiet = false;
 };
@@ -38,13 +38,14 @@ void run_reference(const ReferenceArgs& args) {
   if (args.width > 0) scene.width = args.width;
   if (args.height > 0) scene.height = args.height;
   ReferenceMode mode = parse_reference_mode(args.mode);
+  PathBudget budget = PathBudget::parse(args.paths);
   Body body = scene_body(scene);
   AtmosphereModel model = scene_atmosphere(scene, body);
-  std::filesystem::path cached = reference_cache_file(scene, model, args.spp, mode);
+  std::filesystem::path cached = reference_cache_file(scene, model, budget, mode);
   bool was_cached = std::filesystem::exists(cached);
   bool terminal = isatty(fileno(stderr)) && !args.quiet;
   auto start = std::chrono::steady_clock::now();
-  ReferenceRender render = reference_render(scene, args.spp, mode, [&](double done) {
+  ReferenceRender render = reference_render(scene, budget, mode, [&](double done) {
     if (terminal) std::fprintf(stderr, "\rreference %s: %3.0f%%", scene.name.c_str(), 100 * done);
   });
   const ImageRGB& image = render.image;
@@ -55,9 +56,9 @@ void run_reference(const ReferenceArgs& args) {
   write_exr(out, image);
   std::filesystem::path png = std::filesystem::path(out).replace_extension(".png");
   write_tone_mapped_png(png, image, scene.exposure);
-  double paths = double(scene.width) * scene.height * args.spp;
-  std::printf("%s: %dx%d, %d spp, %s, %s in %.1f s (%.3g paths/s)\n", scene.name.c_str(),
-              scene.width, scene.height, args.spp, args.mode.c_str(),
+  double paths = double(scene.width) * scene.height * budget.spp;
+  std::printf("%s: %dx%d, %s spp, %s, %s in %.1f s (%.3g paths/s)\n", scene.name.c_str(),
+              scene.width, scene.height, budget.label().c_str(), args.mode.c_str(),
               was_cached ? "from the cache" : "rendered", seconds,
               was_cached ? 0.0 : paths / seconds);
   // The render's own noise: the RMS of its per-pixel standard error over
@@ -80,7 +81,8 @@ void add_reference_command(CLI::App& app) {
                           "version in {}.",
                           reference_cache_dir().string()));
   cmd->add_option("--scene", args->scene, "Canonical scene name (see --list)");
-  cmd->add_option("--spp", args->spp, "Paths per pixel")->check(CLI::Range(1, 1 << 20));
+  cmd->add_option("--spp", args->paths,
+                  "Paths per pixel: in all (98304), or per channel (32768,131072,524288)");
   cmd->add_option("--out", args->out, "Output EXR (a tone-mapped PNG is written beside it)");
   cmd->add_option("--mode", args->mode, "rgb (the techniques' 3 wavelengths) or spectral");
   cmd->add_option("--width", args->width, "Image width (default: the scene's, 128)")

@@ -11,8 +11,10 @@ namespace planet {
 
 double DensityProfile::density(double altitude) const {
   const DensityLayer& l = altitude < layers[0].width ? layers[0] : layers[1];
-  double d = l.exp_term * std::exp(l.exp_scale * altitude) + l.linear_term * altitude +
-             l.constant_term;
+  // The exponential only where the layer has one: this runs millions of
+  // times a second in the reference's path tracer.
+  double e = l.exp_term != 0.0 ? l.exp_term * std::exp(l.exp_scale * altitude) : 0.0;
+  double d = e + l.linear_term * altitude + l.constant_term;
   return std::clamp(d, 0.0, 1.0);
 }
 

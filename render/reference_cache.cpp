@@ -50,11 +50,16 @@ class Hasher {
 
 }  // namespace
 
-std::string reference_key(const Scene& scene, const AtmosphereModel& m, int spp,
+std::string reference_key(const Scene& scene, const AtmosphereModel& m, const PathBudget& paths,
                           ReferenceMode mode) {
   Hasher h;
   h.number(kReferenceVersion);
-  h.number(spp);
+  if (paths.per_channel.empty()) {
+    h.number(paths.spp);
+  } else {
+    h.text("per channel");
+    for (int n : paths.per_channel) h.number(n);
+  }
   h.text(to_string(mode));
   h.number(m.bottom_radius), h.number(m.top_radius), h.vec(m.wavelengths_nm),
       h.vec(m.solar_irradiance), h.number(m.sun_angular_radius), h.number(m.mie_g),
@@ -79,10 +84,10 @@ std::string reference_key(const Scene& scene, const AtmosphereModel& m, int spp,
 }
 
 std::filesystem::path reference_cache_file(const Scene& scene, const AtmosphereModel& model,
-                                           int spp, ReferenceMode mode) {
+                                           const PathBudget& paths, ReferenceMode mode) {
   return reference_cache_dir() / fmt::format("{}-{}x{}-{}spp-{}-{}.exr", scene.name, scene.width,
-                                             scene.height, spp, to_string(mode),
-                                             reference_key(scene, model, spp, mode));
+                                             scene.height, paths.label(), to_string(mode),
+                                             reference_key(scene, model, paths, mode));
 }
 
 ImageRGB to_image_rgb(const ReferenceImage& image) {
@@ -132,17 +137,17 @@ std::filesystem::path reference_noise_file(const std::filesystem::path& referenc
   return std::filesystem::path(reference_file).replace_extension(".noise.exr");
 }
 
-ReferenceRender reference_render(const Scene& scene, int spp, ReferenceMode mode,
+ReferenceRender reference_render(const Scene& scene, const PathBudget& paths, ReferenceMode mode,
                                  const std::function<void(double)>& progress) {
   Body body = scene_body(scene);
   AtmosphereModel model = scene_atmosphere(scene, body);
-  std::filesystem::path file = reference_cache_file(scene, model, spp, mode);
+  std::filesystem::path file = reference_cache_file(scene, model, paths, mode);
   std::filesystem::path noise_file = reference_noise_file(file);
   if (std::filesystem::exists(file) && std::filesystem::exists(noise_file)) {
     return {read_image_rgb(file), read_image_rgb(noise_file)};
   }
   ReferenceSettings settings;
-  settings.spp = spp;
+  settings.paths = paths;
   settings.seed = scene.seed();
   settings.progress = progress;
   ReferenceImage image =
@@ -155,9 +160,9 @@ ReferenceRender reference_render(const Scene& scene, int spp, ReferenceMode mode
   return out;
 }
 
-ImageRGB reference_image(const Scene& scene, int spp, ReferenceMode mode,
+ImageRGB reference_image(const Scene& scene, const PathBudget& paths, ReferenceMode mode,
                          const std::function<void(double)>& progress) {
-  return reference_render(scene, spp, mode, progress).image;
+  return reference_render(scene, paths, mode, progress).image;
 }
 
 }  // namespace planet

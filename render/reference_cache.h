@@ -1,7 +1,7 @@
 #pragma once
 // Reference images of the canonical scenes: rendered once by the path
 // tracer and kept as EXR in a cache, keyed by a hash of everything that
-// changes the pixels (the model as loaded, the scene, samples per pixel,
+// changes the pixels (the model as loaded, the scene, paths per pixel,
 // mode and the tracer's version), so a changed body file or a new tracer
 // never serves a stale image.
 //
@@ -22,11 +22,11 @@ constexpr int kReferenceVersion = 5;
 
 std::filesystem::path reference_cache_dir();
 
-// 16 hex digits identifying (model, scene, spp, mode, kReferenceVersion).
-std::string reference_key(const Scene& scene, const AtmosphereModel& model, int spp,
-                          ReferenceMode mode);
+// 16 hex digits identifying (model, scene, paths, mode, kReferenceVersion).
+std::string reference_key(const Scene& scene, const AtmosphereModel& model,
+                          const PathBudget& paths, ReferenceMode mode);
 std::filesystem::path reference_cache_file(const Scene& scene, const AtmosphereModel& model,
-                                           int spp, ReferenceMode mode);
+                                           const PathBudget& paths, ReferenceMode mode);
 
 // The standard error of each pixel of a cached reference (render/
 // path_tracer.h, kReplicates) sits beside it in this file.
@@ -39,11 +39,12 @@ struct ReferenceRender {
 
 // The scene's reference and its noise: read from the cache, or rendered on
 // all cores and cached. `progress` sees the fraction done while rendering.
-ReferenceRender reference_render(const Scene& scene, int spp,
+ReferenceRender reference_render(const Scene& scene, const PathBudget& paths,
                                  ReferenceMode mode = ReferenceMode::kRgb,
                                  const std::function<void(double)>& progress = {});
 // The reference image alone.
-ImageRGB reference_image(const Scene& scene, int spp, ReferenceMode mode = ReferenceMode::kRgb,
+ImageRGB reference_image(const Scene& scene, const PathBudget& paths,
+                         ReferenceMode mode = ReferenceMode::kRgb,
                          const std::function<void(double)>& progress = {});
 
 ImageRGB to_image_rgb(const ReferenceImage& image);

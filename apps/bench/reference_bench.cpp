@@ -16,7 +16,7 @@ void BM_ReferenceEarthNoon(benchmark::State& state, ReferenceMode mode, int thre
   ReferenceView view = reference_view(scene, body, model);
   ReferenceSettings settings;
   // One path per channel and replicate per pixel: 6 (RGB) or 42 (spectral).
-  settings.spp = kReplicates * int(medium.channels.size());
+  settings.paths = kReplicates * int(medium.channels.size());
   settings.threads = threads;
   settings.seed = scene.seed();
   int64_t paths = 0;

@@ -130,7 +130,7 @@ glm::dvec3 ColumnTable::integrate_to_top(double r, double mu) const {
   return rising(h_tangent, h_here) + rising(h_tangent, h_top);
 }
 
-glm::dvec3 ColumnTable::to_top(double r, double mu) const {
+ColumnTable::Cell ColumnTable::locate(double r, double mu) const {
   const double bottom = medium_.bottom_radius, top = medium_.top_radius;
   r = std::clamp(r, bottom, top);
   double rho = std::sqrt(std::max(r * r - bottom * bottom, 0.0));
@@ -142,16 +142,58 @@ glm::dvec3 ColumnTable::to_top(double r, double mu) const {
   double u = std::clamp(x_r, 0.0, 1.0) * (r_size_ - 1);
   double v = std::clamp(x_mu, 0.0, 1.0) * (mu_size_ - 1);
   int i = std::min(int(u), r_size_ - 2), j = std::min(int(v), mu_size_ - 2);
-  double fu = u - i, fv = v - j;
+  return {i, j, u - i, v - j};
+}
+
+glm::dvec3 ColumnTable::texel(int i, int j) const {
+  return glm::exp(texels_[size_t(i) * size_t(mu_size_) + size_t(j)]) - kLogOffset;
+}
+
+glm::dvec3 ColumnTable::to_top(double r, double mu) const {
+  Cell c = locate(r, mu);
   auto at = [&](int a, int b) { return texels_[size_t(a) * size_t(mu_size_) + size_t(b)]; };
-  return glm::exp((1.0 - fu) * ((1.0 - fv) * at(i, j) + fv * at(i, j + 1)) +
-                  fu * ((1.0 - fv) * at(i + 1, j) + fv * at(i + 1, j + 1))) -
+  return glm::exp((1.0 - c.fu) * ((1.0 - c.fv) * at(c.i, c.j) + c.fv * at(c.i, c.j + 1)) +
+                  c.fu * ((1.0 - c.fv) * at(c.i + 1, c.j) + c.fv * at(c.i + 1, c.j + 1))) -
          kLogOffset;
 }
 
 glm::dvec3 ColumnTable::to_top(const glm::dvec3& p, const glm::dvec3& dir) const {
   double r = glm::length(p);
   return to_top(r, glm::dot(p, dir) / r);
+}
+
+namespace {
+// The depth table's offset under its logarithms, in optical depth: where a
+// depth is below it (near the top) the interpolation is linear in depth,
+// and a transmittance error there is below 1e-7.
+constexpr double kDepthOffset = 1e-7;
+}  // namespace
+
+DepthTable::DepthTable(const ColumnTable& columns, const MediumChannel& channel)
+    : columns_(columns), channel_(channel) {
+  const size_t mu_size = size_t(columns.mu_size());
+  texels_.resize(size_t(columns.r_size()) * mu_size);
+  for (int i = 0; i < columns.r_size(); ++i) {
+    for (int j = 0; j < columns.mu_size(); ++j) {
+      glm::dvec3 column = columns.texel(i, j);
+      texels_[size_t(i) * mu_size + size_t(j)] = {
+          float(std::log(channel.rayleigh_scattering * column.x + kDepthOffset)),
+          float(std::log((channel.mie_scattering + channel.mie_absorption) * column.y +
+                         kDepthOffset)),
+          float(channel.absorber_absorption * column.z)};
+    }
+  }
+}
+
+double DepthTable::to_top(double r, double mu) const {
+  ColumnTable::Cell c = columns_.locate(r, mu);
+  const size_t mu_size = size_t(columns_.mu_size());
+  const glm::vec3* row = texels_.data() + size_t(c.i) * mu_size + size_t(c.j);
+  const glm::vec3* next = row + mu_size;
+  glm::dvec3 mixed = (1.0 - c.fu) * ((1.0 - c.fv) * glm::dvec3(row[0]) + c.fv * glm::dvec3(row[1])) +
+                     c.fu * ((1.0 - c.fv) * glm::dvec3(next[0]) + c.fv * glm::dvec3(next[1]));
+  return std::max(std::exp(mixed.x) - kDepthOffset, 0.0) +
+         std::max(std::exp(mixed.y) - kDepthOffset, 0.0) + mixed.z;
 }
 
 }  // namespace planet

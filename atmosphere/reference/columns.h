@@ -44,6 +44,18 @@ class ColumnTable {
 
   const Medium& medium() const { return medium_; }
 
+  // Where (r, mu) falls in the table: texel (i, j) and the weights of its
+  // neighbours (i + 1, j + 1).
+  struct Cell {
+    int i, j;
+    double fu, fv;
+  };
+  Cell locate(double r, double mu) const;
+  int r_size() const { return r_size_; }
+  int mu_size() const { return mu_size_; }
+  // The columns at texel (i, j).
+  glm::dvec3 texel(int i, int j) const;
+
  private:
   const Medium& medium_;
   int r_size_, mu_size_;
@@ -58,5 +70,33 @@ inline double optical_depth(const MediumChannel& c, const glm::dvec3& columns) {
   return c.rayleigh_scattering * columns.x + (c.mie_scattering + c.mie_absorption) * columns.y +
          c.absorber_absorption * columns.z;
 }
+
+// One channel's optical depth to the top, tabled on the columns' texels:
+// log(depth + 1e-7) of its Rayleigh and of its aerosol part, each falling
+// exponentially with its own scale height, and the absorber's depth as it
+// is (Earth's ozone is a layer, not an exponential; its logarithm does not
+// interpolate linearly, nor does that of a sum of exponentials with
+// different scale heights: either way the error grows 15x, measured). Two
+// exponentials a lookup where the columns take three, in floats: half the
+// memory, and paths 1.2x as fast at Earth noon. The tests bound its error
+// with the columns'.
+class DepthTable {
+ public:
+  DepthTable(const ColumnTable& columns, const MediumChannel& channel);
+
+  double to_top(double r, double mu) const;
+  double to_top(const glm::dvec3& p, const glm::dvec3& dir) const {
+    double r = glm::length(p);
+    return to_top(r, glm::dot(p, dir) / r);
+  }
+
+  const Medium& medium() const { return columns_.medium(); }
+  const MediumChannel& channel() const { return channel_; }
+
+ private:
+  const ColumnTable& columns_;
+  const MediumChannel& channel_;
+  std::vector<glm::vec3> texels_;
+};
 
 }  // namespace planet

@@ -68,35 +68,58 @@ constexpr double kRouletteBelow = 0.1;
 // Earth noon blue 0.22 / 0.25 / 0.27.
 constexpr double kSunward = 0.15;
 
-// The optical depth from a segment's start along it, from the column
-// table. A ray that reaches the top is measured by the columns to the top
-// from its two ends; one that meets the ground, by the columns of the
-// reversed ray, which rises from each of its points through the start.
+// Cells of the table that places the sun's light along a segment: 8 cost
+// half of 32 at Earth noon and Mars sunset, for the same spread (measured).
+constexpr int kSunCells = 8;
+
+// The optical depth from a segment's start along it, from the depth table.
+// A ray that reaches the top is measured by the depths to the top from its
+// two ends; one that meets the ground, by the depths of the reversed ray,
+// which rises from each of its points through the start. The depths at the
+// edges of kSunCells equal cells are kept: the sun's table weighs them, and
+// they bracket a collision to one cell before Newton's steps.
 class SegmentDepth {
  public:
-  SegmentDepth(const ColumnTable& table, const MediumChannel& c, const glm::dvec3& start,
-               const glm::dvec3& dir, bool falling)
+  SegmentDepth(const DepthTable& table, const glm::dvec3& start, const glm::dvec3& dir,
+               double length, bool falling)
       : table_(table),
-        c_(c),
         start_(start),
         dir_(falling ? -dir : dir),
-        sign_(falling ? -1.0 : 1.0) {
-    base_ = optical_depth(c_, table_.to_top(start_, dir_));
+        sign_(falling ? -1.0 : 1.0),
+        length_(length) {
+    base_ = table_.to_top(start_, dir_);
+    edges_[0] = 0.0;
+    for (int i = 1; i <= kSunCells; ++i) edges_[size_t(i)] = at(edge_t(i));
+    // Interpolation can make a ray's depth dip by a hair; depth only grows.
+    for (int i = 1; i <= kSunCells; ++i) {
+      edges_[size_t(i)] = std::max(edges_[size_t(i)], edges_[size_t(i) - 1]);
+    }
   }
   double at(double t) const {
-    double rest = optical_depth(c_, table_.to_top(start_ + sign_ * t * dir_, dir_));
+    double rest = table_.to_top(start_ + sign_ * t * dir_, dir_);
     return std::max(sign_ * (base_ - rest), 0.0);
   }
-  // The t in [0, length] where the depth is `depth` (at most at(length)):
-  // Newton's steps on the extinction, kept inside a shrinking bracket.
-  double invert(double depth, double length) const {
+  double edge_t(int i) const { return length_ * i / kSunCells; }
+  // The depth at edge_t(i).
+  double edge(int i) const { return edges_[size_t(i)]; }
+  double total() const { return edges_[kSunCells]; }
+  // The t in [0, length] where the depth is `depth` (at most total()):
+  // Newton's steps on the extinction from within the edges' cell that
+  // holds it, kept inside a shrinking bracket.
+  double invert(double depth) const {
     const Medium& m = table_.medium();
-    double lo = 0.0, hi = length, t = 0.5 * length;
+    int cell = 0;
+    while (cell < kSunCells - 1 && edges_[size_t(cell) + 1] < depth) ++cell;
+    double lo = edge_t(cell), hi = edge_t(cell + 1);
+    double d0 = edges_[size_t(cell)], d1 = edges_[size_t(cell) + 1];
+    double t = d1 > d0 ? lo + (hi - lo) * std::clamp((depth - d0) / (d1 - d0), 0.0, 1.0)
+                       : 0.5 * (lo + hi);
     for (int i = 0; i < 100 && hi - lo > 1e-4; ++i) {
       double f = at(t) - depth;
       if (std::abs(f) < 1e-12 * (1.0 + depth)) break;
       (f < 0.0 ? lo : hi) = t;
-      double sigma = m.at(c_, altitude_of(m, start_ + sign_ * t * dir_)).extinction();
+      double sigma =
+          m.at(table_.channel(), altitude_of(m, start_ + sign_ * t * dir_)).extinction();
       double next = sigma > 0.0 ? t - f / sigma : 0.5 * (lo + hi);
       t = next > lo && next < hi ? next : 0.5 * (lo + hi);
     }
@@ -104,25 +127,21 @@ class SegmentDepth {
   }
 
  private:
-  const ColumnTable& table_;
-  const MediumChannel& c_;
+  const DepthTable& table_;
   glm::dvec3 start_, dir_;
-  double sign_, base_ = 0;
+  double sign_, length_, base_ = 0;
+  std::array<double, kSunCells + 1> edges_;
 };
 
 // Transmittance from p to the top toward `dir`; 0 through the planet.
-double transmittance_to_top(const ColumnTable& table, const MediumChannel& c, const glm::dvec3& p,
-                            const glm::dvec3& dir) {
+double transmittance_to_top(const DepthTable& table, const glm::dvec3& p, const glm::dvec3& dir) {
   const Medium& m = table.medium();
   double r = glm::length(p), mu = glm::dot(p, dir) / r;
   double ratio = std::min(m.bottom_radius / r, 1.0);
   if (mu < -std::sqrt(std::max(1.0 - ratio * ratio, 0.0))) return 0.0;  // the planet's shadow
-  return std::exp(-optical_depth(c, table.to_top(r, mu)));
+  return std::exp(-table.to_top(r, mu));
 }
 
-// Cells of the table that places the sun's light along a segment: 8 cost
-// half of 32 at Earth noon and Mars sunset, for the same spread (measured).
-constexpr int kSunCells = 8;
 // The share of that table's choice spread evenly along the segment, so that
 // light the table's cells missed is still reached.
 constexpr double kEvenShare = 0.1;
@@ -135,21 +154,21 @@ constexpr double kEvenShare = 0.1;
 // the integrand (transmittance along the segment, times the scattering
 // toward the disk's centre, times the sun's transmittance) at the cells'
 // edges, and lands where the light is.
-double sun_along_segment(const ColumnTable& table, const MediumChannel& c, const glm::dvec3& start,
-                         const glm::dvec3& dir, double length, const SegmentDepth& depth,
-                         const glm::dvec3& sun_dir, double cos_alpha, double u, Rng& rng) {
+double sun_along_segment(const DepthTable& table, const glm::dvec3& start, const glm::dvec3& dir,
+                         double length, const SegmentDepth& depth, const glm::dvec3& sun_dir,
+                         double cos_alpha, double u, Rng& rng) {
   const Medium& m = table.medium();
+  const MediumChannel& c = table.channel();
   double nu_centre = glm::dot(dir, sun_dir);
   double p_r = shared::rayleigh_phase(nu_centre);
   double p_m = shared::cornette_shanks_phase(m.mie_g, nu_centre);
   std::array<double, kSunCells + 1> f;
   for (int i = 0; i <= kSunCells; ++i) {
-    double t = length * i / kSunCells;
-    glm::dvec3 p = start + t * dir;
+    glm::dvec3 p = start + depth.edge_t(i) * dir;
     Medium::Coefficients co = m.at(c, altitude_of(m, p));
-    f[size_t(i)] = std::exp(-depth.at(t)) *
+    f[size_t(i)] = std::exp(-depth.edge(i)) *
                    (co.scattering_rayleigh * p_r + co.scattering_mie * p_m) *
-                   transmittance_to_top(table, c, p, sun_dir);
+                   transmittance_to_top(table, p, sun_dir);
   }
   std::array<double, kSunCells> share;
   double total = 0;
@@ -169,16 +188,17 @@ double sun_along_segment(const ColumnTable& table, const MediumChannel& c, const
   double scattering = co.scattering_rayleigh * shared::rayleigh_phase(nu) +
                       co.scattering_mie * shared::cornette_shanks_phase(m.mie_g, nu);
   return std::exp(-depth.at(t)) * scattering * c.solar_irradiance *
-         transmittance_to_top(table, c, p, to_sun) / pdf;
+         transmittance_to_top(table, p, to_sun) / pdf;
 }
 
 }  // namespace
 
-double trace_path(const ColumnTable& table, const MediumChannel& c, glm::dvec3 origin,
-                  glm::dvec3 dir, const glm::dvec3& sun_dir, const TraceOptions& options,
+double trace_path(const DepthTable& table, glm::dvec3 origin, glm::dvec3 dir,
+                  const glm::dvec3& sun_dir, const TraceOptions& options,
                   reference::PathSampler& sampler) {
   Rng& rng = sampler.rng();
   const Medium& m = table.medium();
+  const MediumChannel& c = table.channel();
   const double cos_alpha = std::cos(m.sun_angular_radius);
   // Sun disk radiance E / solid angle, as the GPU frame draws it; a point
   // on the disk sampled with pdf 1 / solid angle leaves E per estimate.
@@ -195,15 +215,15 @@ double trace_path(const ColumnTable& table, const MediumChannel& c, glm::dvec3 o
     }
     glm::dvec3 start = origin + s.t0 * dir;
     double length = s.t1 - s.t0;
-    SegmentDepth depth(table, c, start, dir, s.hits_ground);
-    double tau = depth.at(length);
+    SegmentDepth depth(table, start, dir, length, s.hits_ground);
+    double tau = depth.total();
     double transmittance = std::exp(-tau), opacity = -std::expm1(-tau);
     // Two stratified numbers per segment: where along it the sun's light
     // is gathered, and where the path goes on from.
     glm::dvec2 segment_numbers = sampler.pair();
     if (options.sun && opacity > 0.0) {
-      radiance += weight * sun_along_segment(table, c, start, dir, length, depth, sun_dir,
-                                             cos_alpha, segment_numbers.x, rng);
+      radiance += weight * sun_along_segment(table, start, dir, length, depth, sun_dir, cos_alpha,
+                                             segment_numbers.x, rng);
     }
     glm::dvec3 end = start + length * dir;
     glm::dvec3 normal = glm::normalize(end);
@@ -212,7 +232,7 @@ double trace_path(const ColumnTable& table, const MediumChannel& c, glm::dvec3 o
       double cos_sun = glm::dot(normal, to_sun);
       if (cos_sun > 0.0) {
         radiance += weight * transmittance * c.solar_irradiance * m.ground_albedo / reference::kPi *
-                    cos_sun * transmittance_to_top(table, c, normal * m.bottom_radius, to_sun);
+                    cos_sun * transmittance_to_top(table, normal * m.bottom_radius, to_sun);
       }
     }
     if (!s.hits_ground) {
@@ -238,7 +258,7 @@ double trace_path(const ColumnTable& table, const MediumChannel& c, glm::dvec3 o
     if (collides) {
       if (opacity <= 0.0) return radiance;
       // In proportion to transmittance times extinction.
-      double t = depth.invert(-std::log1p(-u * opacity), length);
+      double t = depth.invert(-std::log1p(-u * opacity));
       origin = start + t * dir;
       Medium::Coefficients co = m.at(c, altitude_of(m, origin));
       if (co.extinction() <= 0.0) return radiance;
@@ -291,16 +311,86 @@ double trace_path(const ColumnTable& table, const MediumChannel& c, glm::dvec3 o
   }
 }
 
-RadianceEstimate estimate_radiance(const ColumnTable& table, size_t channel,
+PathBudget::PathBudget(std::vector<int> per_channel)
+    : spp(0), per_channel(std::move(per_channel)) {
+  for (int n : this->per_channel) spp += n;
+}
+
+PathBudget PathBudget::parse(const std::string& text) {
+  std::vector<int> counts;
+  size_t at = 0;
+  while (true) {
+    size_t comma = text.find(',', at);
+    std::string part = text.substr(at, comma == std::string::npos ? std::string::npos : comma - at);
+    size_t used = 0;
+    long long n = -1;
+    try {
+      n = std::stoll(part, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (part.empty() || used != part.size() || n < 1 || n > (1 << 24)) {
+      throw InputError(fmt::format(
+          "'{}' is not a path count: give paths per pixel, 1 to {}, in all (98304) or per "
+          "channel (32768,131072,524288)",
+          text, 1 << 24));
+    }
+    counts.push_back(int(n));
+    if (comma == std::string::npos) break;
+    at = comma + 1;
+  }
+  return counts.size() == 1 ? PathBudget(counts[0]) : PathBudget(std::move(counts));
+}
+
+std::string PathBudget::label() const {
+  if (per_channel.empty()) return std::to_string(spp);
+  std::string out;
+  for (int n : per_channel) out += (out.empty() ? "" : ",") + std::to_string(n);
+  return out;
+}
+
+std::vector<int> PathBudget::lane_paths(size_t channels) const {
+  const size_t lanes = kReplicates * channels;
+  std::vector<int> out(lanes);
+  if (per_channel.empty()) {
+    if (spp < int(lanes)) {
+      throw InputError(fmt::format("{} samples per pixel: at least {} are needed (one per "
+                                   "channel in each of {} replicates)",
+                                   spp, lanes, kReplicates));
+    }
+    // Path s of the pixel belongs to lane s % lanes.
+    for (size_t lane = 0; lane < lanes; ++lane) {
+      out[lane] = int((size_t(spp) - lane + lanes - 1) / lanes);
+    }
+    return out;
+  }
+  if (per_channel.size() != channels) {
+    throw InputError(fmt::format("{} path counts for {} channels: give one per channel",
+                                 per_channel.size(), channels));
+  }
+  for (size_t c = 0; c < channels; ++c) {
+    if (per_channel[c] < kReplicates) {
+      throw InputError(fmt::format("{} paths in channel {}: at least {} are needed (one in each "
+                                   "replicate)",
+                                   per_channel[c], c, kReplicates));
+    }
+    for (size_t r = 0; r < size_t(kReplicates); ++r) {
+      out[r * channels + c] = int((size_t(per_channel[c]) - r + kReplicates - 1) / kReplicates);
+    }
+  }
+  return out;
+}
+
+RadianceEstimate estimate_radiance(const ColumnTable& columns, size_t channel,
                                    const glm::dvec3& origin, const glm::dvec3& dir,
                                    const glm::dvec3& sun_dir, const TraceOptions& options,
                                    int paths, uint64_t seed) {
+  const DepthTable table(columns, columns.medium().channels.at(channel));
   // Welford's running mean and variance.
   double mean = 0, m2 = 0;
   for (int i = 0; i < paths; ++i) {
     reference::PathSampler sampler(reference::mix64(seed ^ reference::mix64(channel)), uint32_t(i));
-    double x = trace_path(table, table.medium().channels.at(channel), origin, dir, sun_dir, options,
-                          sampler);
+    double x = trace_path(table, origin, dir, sun_dir, options, sampler);
     double delta = x - mean;
     mean += delta / (i + 1);
     m2 += delta * (x - mean);
@@ -315,11 +405,7 @@ ReferenceImage render_reference(const Medium& m, const ReferenceView& view,
                                 const ReferenceSettings& settings) {
   const size_t channels = m.channels.size();
   const size_t lanes = kReplicates * channels;
-  if (settings.spp < int(lanes)) {
-    throw InputError(fmt::format(
-        "{} samples per pixel: at least {} are needed (one per channel in each of {} replicates)",
-        settings.spp, lanes, kReplicates));
-  }
+  const std::vector<int> lane_paths = settings.paths.lane_paths(channels);
   auto start = std::chrono::steady_clock::now();
   ReferenceImage image;
   image.width = view.width;
@@ -332,33 +418,32 @@ ReferenceImage render_reference(const Medium& m, const ReferenceView& view,
   double r_min = m.bottom_radius + 1.0;
   if (glm::length(camera) < r_min) camera *= r_min / glm::length(camera);
   glm::dvec3 sun = glm::normalize(view.sun_dir_atmo);
-  const ColumnTable table(m);
+  const ColumnTable columns(m);
+  std::vector<DepthTable> tables;
+  for (const MediumChannel& c : m.channels) tables.emplace_back(columns, c);
 
   std::atomic<int> next_row{0}, rows_done{0};
   auto work = [&] {
     // One lane per (replicate, channel): its own stratified sequence.
     std::vector<double> sum(lanes);
-    std::vector<int> count(lanes);
     for (int y = next_row++; y < view.height; y = next_row++) {
       for (int x = 0; x < view.width; ++x) {
         uint64_t pixel = uint64_t(y) * uint64_t(view.width) + uint64_t(x);
         glm::dvec3 dir = view.ray_dir(x, y);
         std::fill(sum.begin(), sum.end(), 0.0);
-        std::fill(count.begin(), count.end(), 0);
-        for (int s = 0; s < settings.spp; ++s) {
-          // Lanes in turn, so each gets spp / lanes paths.
-          size_t lane = size_t(s) % lanes;
-          reference::PathSampler sampler(
-              reference::mix64(settings.seed ^ reference::mix64(pixel * lanes + lane)),
-              uint32_t(size_t(s) / lanes));
-          sum[lane] += trace_path(table, m.channels[lane % channels], camera, dir, sun,
-                                  settings.trace, sampler);
-          ++count[lane];
+        // Lane by lane, which keeps one channel's table in the cache.
+        for (size_t lane = 0; lane < lanes; ++lane) {
+          const DepthTable& table = tables[lane % channels];
+          uint64_t seed = reference::mix64(settings.seed ^ reference::mix64(pixel * lanes + lane));
+          for (int i = 0; i < lane_paths[lane]; ++i) {
+            reference::PathSampler sampler(seed, uint32_t(i));
+            sum[lane] += trace_path(table, camera, dir, sun, settings.trace, sampler);
+          }
         }
         std::array<glm::dvec3, kReplicates> replicate{};
         for (size_t lane = 0; lane < lanes; ++lane) {
           replicate[lane / channels] +=
-              sum[lane] / count[lane] * m.channels[lane % channels].rgb_weight;
+              sum[lane] / lane_paths[lane] * m.channels[lane % channels].rgb_weight;
         }
         static_assert(kReplicates == 2, "the mean and spread below are of two replicates");
         glm::dvec3 mean = 0.5 * (replicate[0] + replicate[1]);
@@ -383,7 +468,9 @@ ReferenceImage render_reference(const Medium& m, const ReferenceView& view,
     settings.progress(1.0);
   }
   for (auto& t : pool) t.join();
-  image.paths = uint64_t(view.width) * uint64_t(view.height) * uint64_t(settings.spp);
+  uint64_t pixel_paths = 0;
+  for (int n : lane_paths) pixel_paths += uint64_t(n);
+  image.paths = uint64_t(view.width) * uint64_t(view.height) * pixel_paths;
   image.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return image;
 }

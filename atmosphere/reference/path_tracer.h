@@ -3,7 +3,7 @@
 // spherical atmosphere (Medium) with a Lambertian ground.
 //
 // Per path, one channel (wavelength). Every transmittance is exact to the
-// column table's interpolation (reference/columns.h): along a segment, the
+// depth table's interpolation (reference/columns.h): along a segment, the
 // difference of two lookups; toward the sun, one (zero inside the planet's
 // shadow). On each segment of a path (the camera ray, then one per
 // scattering or reflection):
@@ -35,6 +35,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace planet {
@@ -69,21 +70,44 @@ struct TraceOptions {
   bool sun = true;
 };
 
-struct ReferenceSettings {
-  int spp = 64;       // paths per pixel, spread evenly over replicates and channels
-  int threads = 0;    // 0: all cores
-  uint64_t seed = 0;  // the scene's seed
-  TraceOptions trace;
-  // Called now and then with the fraction of rows done.
-  std::function<void(double)> progress;
-};
-
 // A render is the mean of two independent replicates (each its own
 // scrambling of the stratified sequences), and half their difference is
 // the standard error of that mean: its square's expectation is the mean's
 // variance. Stratified sampling makes the spread of the paths themselves
 // overstate the error, so the replicates are what measures it.
 constexpr int kReplicates = 2;
+
+// Paths per pixel: `spp` in all, spread evenly over the replicates and the
+// channels; or, where `per_channel` is given, that many in each channel
+// (spread over the replicates). A channel's noise falls as one over the
+// square root of its paths, and the channels are traced apart, so the
+// noisiest one (Earth's blue) can have more without the others paying.
+struct PathBudget {
+  int spp = 64;
+  std::vector<int> per_channel;
+
+  PathBudget() = default;
+  PathBudget(int spp) : spp(spp) {}  // NOLINT: a plain count reads as one
+  explicit PathBudget(std::vector<int> per_channel);
+  // "98304" (in all) or "32768,131072,524288" (per channel); InputError
+  // for anything else or a count below 1 or above 2^24.
+  static PathBudget parse(const std::string& text);
+  // The form parse() reads: for file names and messages.
+  std::string label() const;
+  // Paths per pixel in each lane, lane = replicate * channels + channel;
+  // InputError where a lane would get none.
+  std::vector<int> lane_paths(size_t channels) const;
+  bool operator==(const PathBudget&) const = default;
+};
+
+struct ReferenceSettings {
+  PathBudget paths;
+  int threads = 0;    // 0: all cores
+  uint64_t seed = 0;  // the scene's seed
+  TraceOptions trace;
+  // Called now and then with the fraction of rows done.
+  std::function<void(double)> progress;
+};
 
 struct ReferenceImage {
   int width = 0, height = 0;
@@ -97,10 +121,10 @@ ReferenceImage render_reference(const Medium& medium, const ReferenceView& view,
                                 const ReferenceSettings& settings);
 
 // The radiance (per nm, in the units of the solar irradiance) arriving at
-// `origin` from direction -dir, in one channel: one path, its numbers from
-// `sampler`.
-double trace_path(const ColumnTable& table, const MediumChannel& channel, glm::dvec3 origin,
-                  glm::dvec3 dir, const glm::dvec3& sun_dir, const TraceOptions& options,
+// `origin` from direction -dir, in the table's channel: one path, its
+// numbers from `sampler`.
+double trace_path(const DepthTable& table, glm::dvec3 origin, glm::dvec3 dir,
+                  const glm::dvec3& sun_dir, const TraceOptions& options,
                   reference::PathSampler& sampler);
 
 struct RadianceEstimate {
@@ -108,7 +132,7 @@ struct RadianceEstimate {
   double std_error = 0;
 };
 // `paths` paths of one channel in one direction, streams seeded from `seed`.
-RadianceEstimate estimate_radiance(const ColumnTable& table, size_t channel,
+RadianceEstimate estimate_radiance(const ColumnTable& columns, size_t channel,
                                    const glm::dvec3& origin, const glm::dvec3& dir,
                                    const glm::dvec3& sun_dir, const TraceOptions& options,
                                    int paths, uint64_t seed);

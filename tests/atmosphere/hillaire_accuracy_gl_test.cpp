@@ -32,7 +32,7 @@ Scene small_scene(const std::string& name) {
 
 struct AccuracyCase {
   const char* scene;
-  int spp;  // of the cached reference (its noise: README, "Accuracy")
+  PathBudget spp;  // of the cached reference (its noise: README, "Accuracy")
   // Largest relative RMSE (any channel, sun disk excluded) let through:
   // today's measured error plus a fifth, so that a regression fails. The
   // goals (2 % noon and 400 km, 5 % sunset, twilight and Mars) hold but
@@ -50,7 +50,7 @@ const AccuracyCase kCases[] = {
     {"mars_noon", 196608, 0.032},      {"mars_sunset", 393216, 0.085},
 };
 
-int reference_spp(const std::string& scene) {
+PathBudget reference_spp(const std::string& scene) {
   for (const AccuracyCase& c : kCases) {
     if (scene == c.scene) return c.spp;
   }
@@ -83,7 +83,7 @@ TEST_P(HillaireAccuracyGLTest, MatchesTheGroundTruth) {
   ASSERT_TRUE(std::filesystem::exists(cached) &&
               std::filesystem::exists(reference_noise_file(cached)))
       << cached << " or its noise is not cached; render it with `planet reference --scene "
-      << c.scene << " --spp " << c.spp << " --width " << kWidth << " --height " << kHeight
+      << c.scene << " --spp " << c.spp.label() << " --width " << kWidth << " --height " << kHeight
       << " --out FILE` under PLANET_CACHE_DIR=data and commit it";
   ImageRGB reference = reference_image(scene, c.spp);
   ImageRGB technique = render_scene_with(scene, "hillaire");

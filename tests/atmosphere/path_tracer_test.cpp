@@ -8,6 +8,7 @@
 #include "atmosphere/scenes/scene.h"
 #include "atmosphere/shared_math.h"
 #include "sim/body.h"
+#include "sim/error.h"
 
 #include <gtest/gtest.h>
 
@@ -205,8 +206,10 @@ TEST(PathTracerTest, ColumnTableMatchesDirectIntegration) {
         parse_atmosphere(JsonObject(body.atmosphere, body.file.string(), "atmosphere"));
     Medium medium = make_medium(model, ReferenceMode::kRgb);
     const ColumnTable table(medium);
+    std::vector<DepthTable> depths;
+    for (const MediumChannel& c : medium.channels) depths.emplace_back(table, c);
     Rng rng(17);
-    double worst_rule = 0, worst_table = 0, sum_sq = 0;
+    double worst_rule = 0, worst_table = 0, sum_sq = 0, worst_depth = 0, depth_sum_sq = 0;
     int n = 0;
     for (int i = 0; i < 2000; ++i) {
       // Heights packed toward the ground, half the rays near the horizon.
@@ -218,13 +221,17 @@ TEST(PathTracerTest, ColumnTableMatchesDirectIntegration) {
                         : horizon + (1.0 - horizon) * rng.uniform();
       glm::dvec3 rule = table.integrate_to_top(r, mu), lookup = table.to_top(r, mu);
       glm::dvec3 plain = i < 40 ? midpoint_columns(medium, r, mu) : rule;
-      for (const MediumChannel& c : medium.channels) {
+      for (size_t k = 0; k < medium.channels.size(); ++k) {
+        const MediumChannel& c = medium.channels[k];
         double tau = optical_depth(c, rule);
         if (tau > 30.0) continue;  // transmittance below 1e-13: nothing to see
         worst_rule = std::max(worst_rule, std::abs(tau - optical_depth(c, plain)));
         double d = optical_depth(c, lookup) - tau;
         worst_table = std::max(worst_table, std::abs(d));
         sum_sq += d * d;
+        double dd = depths[k].to_top(r, mu) - tau;
+        worst_depth = std::max(worst_depth, std::abs(dd));
+        depth_sum_sq += dd * dd;
         ++n;
       }
     }
@@ -232,7 +239,29 @@ TEST(PathTracerTest, ColumnTableMatchesDirectIntegration) {
     EXPECT_LT(worst_rule, 2e-6) << body_name << ": Gauss-Legendre against the midpoint rule";
     EXPECT_LT(std::sqrt(sum_sq / n), 2e-5) << body_name << ": table RMS";
     EXPECT_LT(worst_table, 4e-4) << body_name << ": table worst";
+    EXPECT_LT(std::sqrt(depth_sum_sq / n), 2e-5) << body_name << ": depth table RMS";
+    EXPECT_LT(worst_depth, 4e-4) << body_name << ": depth table worst";
+    std::printf("%s: optical depth error RMS %.2g (columns) %.2g (depths), worst %.2g %.2g\n",
+                body_name, std::sqrt(sum_sq / n), std::sqrt(depth_sum_sq / n), worst_table,
+                worst_depth);
   }
+}
+
+TEST(PathTracerTest, PathBudgetsSpreadOverLanes) {
+  // In all: path s of a pixel goes to lane s % 6 (2 replicates x 3 channels).
+  EXPECT_EQ(PathBudget(14).lane_paths(3), (std::vector<int>{3, 3, 2, 2, 2, 2}));
+  // Per channel: lanes are replicate-major, each channel split over both.
+  PathBudget per_channel = PathBudget::parse("4,10,7");
+  EXPECT_EQ(per_channel.spp, 21);
+  EXPECT_EQ(per_channel.label(), "4,10,7");
+  EXPECT_EQ(per_channel.lane_paths(3), (std::vector<int>{2, 5, 4, 2, 5, 3}));
+  EXPECT_EQ(PathBudget::parse("98304"), PathBudget(98304));
+  for (const char* bad : {"", "12x", "0", "-6", "4,,4", "4,", "99999999999"}) {
+    EXPECT_THROW(PathBudget::parse(bad), InputError) << bad;
+  }
+  EXPECT_THROW(PathBudget(5).lane_paths(3), InputError);                    // a lane with none
+  EXPECT_THROW(PathBudget::parse("4,4").lane_paths(3), InputError);        // channels
+  EXPECT_THROW(PathBudget::parse("4,1,4").lane_paths(3), InputError);      // a replicate with none
 }
 
 TEST(PathTracerTest, StratifiedPairsFillEveryElementaryInterval) {
@@ -271,7 +300,7 @@ ReferenceImage furnace(double ground_albedo, double scattering_scale, glm::dvec3
   glm::dvec3 up = glm::cross(right, forward);
   view.ray_from_ndc = glm::dmat3(2.0 * right, up, forward);
   ReferenceSettings settings;
-  settings.spp = 2 * 3 * 64;
+  settings.paths = 2 * 3 * 64;
   settings.seed = 3;
   settings.trace.sun = false;
   settings.trace.environment_radiance = 1.0;
@@ -326,7 +355,7 @@ TEST(PathTracerTest, SameBitsAtOneAndTwoThreads) {
   for (ReferenceMode mode : {ReferenceMode::kRgb, ReferenceMode::kSpectral}) {
     Medium medium = make_medium(model, mode);
     ReferenceSettings settings;
-    settings.spp = kReplicates * int(medium.channels.size());
+    settings.paths = kReplicates * int(medium.channels.size());
     settings.seed = scene.seed();
     settings.threads = 1;
     ReferenceImage one = render_reference(medium, reference_view(scene, body, model), settings);
