@@ -78,8 +78,7 @@ inline double optical_depth(const MediumChannel& c, const glm::dvec3& columns) {
 // interpolate linearly, nor does that of a sum of exponentials with
 // different scale heights: either way the error grows 15x, measured). Two
 // exponentials a lookup where the columns take three, in floats: half the
-// memory, and paths 1.2x as fast at Earth noon. The tests bound its error
-// with the columns'.
+// memory. The tests bound its error with the columns'.
 class DepthTable {
  public:
   DepthTable(const ColumnTable& columns, const MediumChannel& channel);
