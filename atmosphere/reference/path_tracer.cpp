@@ -311,9 +311,8 @@ double trace_path(const DepthTable& table, glm::dvec3 origin, glm::dvec3 dir,
   }
 }
 
-PathBudget::PathBudget(std::vector<int> per_channel)
-    : spp(0), per_channel(std::move(per_channel)) {
-  for (int n : this->per_channel) spp += n;
+PathBudget::PathBudget(std::vector<int> counts) : spp(0), per_channel(std::move(counts)) {
+  for (int n : per_channel) spp += n;
 }
 
 PathBudget PathBudget::parse(const std::string& text) {

@@ -87,8 +87,8 @@ struct PathBudget {
   std::vector<int> per_channel;
 
   PathBudget() = default;
-  PathBudget(int spp) : spp(spp) {}  // NOLINT: a plain count reads as one
-  explicit PathBudget(std::vector<int> per_channel);
+  PathBudget(int count) : spp(count) {}  // NOLINT: a plain count reads as one
+  explicit PathBudget(std::vector<int> counts);
   // "98304" (in all) or "32768,131072,524288" (per channel); InputError
   // for anything else or a count below 1 or above 2^24.
   static PathBudget parse(const std::string& text);
