@@ -155,7 +155,7 @@ constexpr double kEvenShare = 0.1;
 // toward the disk's centre, times the sun's transmittance) at the cells'
 // edges, and lands where the light is.
 double sun_along_segment(const DepthTable& table, const glm::dvec3& start, const glm::dvec3& dir,
-                         double length, const SegmentDepth& depth, const glm::dvec3& sun_dir,
+                         const SegmentDepth& depth, const glm::dvec3& sun_dir,
                          double cos_alpha, double u, Rng& rng) {
   const Medium& m = table.medium();
   const MediumChannel& c = table.channel();
@@ -178,7 +178,7 @@ double sun_along_segment(const DepthTable& table, const glm::dvec3& start, const
   int cell = 0;
   while (cell < kSunCells - 1 && u >= share[size_t(cell)]) u -= share[size_t(cell++)];
   double within = std::clamp(u / share[size_t(cell)], 0.0, 1.0);
-  double cell_length = length / kSunCells;
+  double cell_length = depth.edge_t(1);
   double t = (cell + within) * cell_length;
   double pdf = share[size_t(cell)] / cell_length;
   glm::dvec3 p = start + t * dir;
@@ -222,7 +222,7 @@ double trace_path(const DepthTable& table, glm::dvec3 origin, glm::dvec3 dir,
     // is gathered, and where the path goes on from.
     glm::dvec2 segment_numbers = sampler.pair();
     if (options.sun && opacity > 0.0) {
-      radiance += weight * sun_along_segment(table, start, dir, length, depth, sun_dir, cos_alpha,
+      radiance += weight * sun_along_segment(table, start, dir, depth, sun_dir, cos_alpha,
                                              segment_numbers.x, rng);
     }
     glm::dvec3 end = start + length * dir;
