@@ -57,10 +57,15 @@ void run_reference(const ReferenceArgs& args) {
   std::filesystem::path png = std::filesystem::path(out).replace_extension(".png");
   write_tone_mapped_png(png, image, scene.exposure);
   double paths = double(scene.width) * scene.height * budget.spp;
+  double traced = paths * (1.0 - render.started_share);
   std::printf("%s: %dx%d, %s spp, %s, %s in %.1f s (%.3g paths/s)\n", scene.name.c_str(),
               scene.width, scene.height, budget.label().c_str(), args.mode.c_str(),
               was_cached ? "from the cache" : "rendered", seconds,
-              was_cached ? 0.0 : paths / seconds);
+              was_cached ? 0.0 : traced / seconds);
+  if (!render.started_from.empty()) {
+    std::printf("went on from %s (%.1f%% of the paths)\n", render.started_from.string().c_str(),
+                100 * render.started_share);
+  }
   // The render's own noise: the RMS of its per-pixel standard error over
   // the mean radiance, sun disk excluded, as `planet accuracy` gives it.
   std::vector<uint8_t> mask = sun_disk_mask(scene);
@@ -78,7 +83,10 @@ void add_reference_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "reference", "Path-trace a canonical scene's ground truth (cached, see --help)");
   cmd->footer(fmt::format("Renders are cached by a hash of model, scene, spp, mode and tracer "
-                          "version in {}.",
+                          "version in {}. A render writes its running sums there every few "
+                          "minutes (.sums): run it again and it goes on from them, and a "
+                          "larger --spp for the same view starts from the sums of a smaller "
+                          "one.",
                           reference_cache_dir().string()));
   cmd->add_option("--scene", args->scene, "Canonical scene name (see --list)");
   cmd->add_option("--spp", args->paths,

@@ -1,11 +1,16 @@
 #include "render/reference_cache.h"
 
+#include "sim/error.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <fstream>
+#include <optional>
+#include <utility>
 
 namespace planet {
 
@@ -50,16 +55,10 @@ class Hasher {
 
 }  // namespace
 
-std::string reference_key(const Scene& scene, const AtmosphereModel& m, const PathBudget& paths,
-                          ReferenceMode mode) {
-  Hasher h;
-  h.number(kReferenceVersion);
-  if (paths.per_channel.empty()) {
-    h.number(paths.spp);
-  } else {
-    h.text("per channel");
-    for (int n : paths.per_channel) h.number(n);
-  }
+namespace {
+
+// Everything but the tracer's version and the paths.
+void hash_view(Hasher& h, const Scene& scene, const AtmosphereModel& m, ReferenceMode mode) {
   h.text(to_string(mode));
   h.number(m.bottom_radius), h.number(m.top_radius), h.vec(m.wavelengths_nm),
       h.vec(m.solar_irradiance), h.number(m.sun_angular_radius), h.number(m.mie_g),
@@ -80,6 +79,29 @@ std::string reference_key(const Scene& scene, const AtmosphereModel& m, const Pa
       h.number(scene.camera.body_from_camera.y), h.number(scene.camera.body_from_camera.z);
   h.number(scene.camera.vertical_fov), h.number(scene.width), h.number(scene.height);
   h.number(scene.projection == Projection::kPerspective ? 0 : 1);
+}
+
+}  // namespace
+
+std::string reference_key(const Scene& scene, const AtmosphereModel& m, const PathBudget& paths,
+                          ReferenceMode mode) {
+  Hasher h;
+  h.number(kReferenceVersion);
+  if (paths.per_channel.empty()) {
+    h.number(paths.spp);
+  } else {
+    h.text("per channel");
+    for (int n : paths.per_channel) h.number(n);
+  }
+  hash_view(h, scene, m, mode);
+  return fmt::format("{:016x}", h.value());
+}
+
+std::string reference_view_key(const Scene& scene, const AtmosphereModel& m, ReferenceMode mode) {
+  Hasher h;
+  h.number(kReferenceVersion);
+  h.text("any paths");
+  hash_view(h, scene, m, mode);
   return fmt::format("{:016x}", h.value());
 }
 
@@ -137,6 +159,107 @@ std::filesystem::path reference_noise_file(const std::filesystem::path& referenc
   return std::filesystem::path(reference_file).replace_extension(".noise.exr");
 }
 
+std::filesystem::path reference_sums_file(const std::filesystem::path& reference_file) {
+  return std::filesystem::path(reference_file).replace_extension(".sums");
+}
+
+namespace {
+
+constexpr const char* kSumsMagic = "planet reference sums 1";
+
+// A text header (magic, view key, width height lanes, paths per lane),
+// then the sums as little-endian doubles.
+void write_sums(const std::filesystem::path& file, const std::string& view_key,
+                const RenderSums& sums) {
+  std::string header = fmt::format("{}\n{}\n{} {} {}\n", kSumsMagic, view_key, sums.width,
+                                   sums.height, sums.done.size());
+  for (size_t i = 0; i < sums.done.size(); ++i) {
+    header += fmt::format("{}{}", i ? " " : "", sums.done[i]);
+  }
+  header += "\n";
+  // Into a neighbour first and then renamed: a render killed while
+  // writing leaves the last whole checkpoint.
+  std::filesystem::path part = file;
+  part += ".writing";
+  {
+    std::ofstream out(part, std::ios::binary | std::ios::trunc);
+    out.write(header.data(), std::streamsize(header.size()));
+    out.write(reinterpret_cast<const char*>(sums.sum.data()),
+              std::streamsize(sums.sum.size() * sizeof(double)));
+    if (!out) throw SystemError(fmt::format("could not write {}", part.string()));
+  }
+  std::filesystem::rename(part, file);
+}
+
+// The sums in `file`, or nothing where they are of another view (another
+// scene, size, model, mode or tracer version). A file that is not sums at
+// all is an error that names it.
+std::optional<RenderSums> read_sums(const std::filesystem::path& file,
+                                    const std::string& view_key) {
+  std::ifstream in(file, std::ios::binary);
+  auto bad = [&](const std::string& what) {
+    return InputError(fmt::format("{}: {} (delete it and the render starts from nothing)",
+                                  file.string(), what));
+  };
+  std::string magic, key;
+  std::getline(in, magic);
+  std::getline(in, key);
+  if (!in || magic != kSumsMagic) throw bad("not the sums of a reference render");
+  if (key != view_key) return std::nullopt;
+  RenderSums sums;
+  size_t lanes = 0;
+  in >> sums.width >> sums.height >> lanes;
+  if (!in || sums.width < 1 || sums.height < 1 || lanes < 1 || lanes > 1024) {
+    throw bad("its size line is not 'width height lanes'");
+  }
+  sums.done.resize(lanes);
+  for (int& n : sums.done) in >> n;
+  if (!in || in.get() != '\n') throw bad("its paths line does not give one count per lane");
+  sums.sum.resize(size_t(sums.width) * size_t(sums.height) * lanes);
+  in.read(reinterpret_cast<char*>(sums.sum.data()),
+          std::streamsize(sums.sum.size() * sizeof(double)));
+  if (!in || in.peek() != std::char_traits<char>::eof()) {
+    throw bad(fmt::format("it should hold {} sums after its header", sums.sum.size()));
+  }
+  return sums;
+}
+
+// The sums in the cache a render of this view and budget can go on from:
+// of the same view, with no more paths in any lane than the budget gives
+// it; of those, the one furthest along.
+std::optional<std::pair<std::filesystem::path, RenderSums>> find_start(
+    const Scene& scene, const std::string& view_key, ReferenceMode mode,
+    const std::vector<int>& lane_paths) {
+  std::optional<std::pair<std::filesystem::path, RenderSums>> best;
+  std::error_code ec;
+  std::string prefix = fmt::format("{}-{}x{}-", scene.name, scene.width, scene.height);
+  std::string mode_part = fmt::format("spp-{}-", to_string(mode));
+  auto traced = [](const RenderSums& s) {
+    int64_t n = 0;
+    for (int d : s.done) n += d;
+    return n;
+  };
+  for (const auto& entry : std::filesystem::directory_iterator(reference_cache_dir(), ec)) {
+    std::string name = entry.path().filename().string();
+    if (entry.path().extension() != ".sums" || name.rfind(prefix, 0) != 0 ||
+        name.find(mode_part) == std::string::npos) {
+      continue;
+    }
+    std::optional<RenderSums> sums = read_sums(entry.path(), view_key);
+    if (!sums || sums->done.size() != lane_paths.size()) continue;
+    bool fits = true;
+    for (size_t lane = 0; lane < lane_paths.size(); ++lane) {
+      fits = fits && sums->done[lane] <= lane_paths[lane];
+    }
+    if (fits && (!best || traced(*sums) > traced(best->second))) {
+      best.emplace(entry.path(), std::move(*sums));
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
 ReferenceRender reference_render(const Scene& scene, const PathBudget& paths, ReferenceMode mode,
                                  const std::function<void(double)>& progress) {
   Body body = scene_body(scene);
@@ -144,16 +267,34 @@ ReferenceRender reference_render(const Scene& scene, const PathBudget& paths, Re
   std::filesystem::path file = reference_cache_file(scene, model, paths, mode);
   std::filesystem::path noise_file = reference_noise_file(file);
   if (std::filesystem::exists(file) && std::filesystem::exists(noise_file)) {
-    return {read_image_rgb(file), read_image_rgb(noise_file)};
+    return {read_image_rgb(file), read_image_rgb(noise_file), {}, 0.0};
   }
+  Medium medium = make_medium(model, mode);
+  std::vector<int> lane_paths = paths.lane_paths(medium.channels.size());
+  std::string view_key = reference_view_key(scene, model, mode);
+  std::filesystem::path sums_file = reference_sums_file(file);
+  std::filesystem::create_directories(file.parent_path());
   ReferenceSettings settings;
   settings.paths = paths;
   settings.seed = scene.seed();
   settings.progress = progress;
-  ReferenceImage image =
-      render_reference(make_medium(model, mode), reference_view(scene, body, model), settings);
-  ReferenceRender out{to_image_rgb(image), {image.width, image.height, image.noise}};
-  std::filesystem::create_directories(file.parent_path());
+  settings.checkpoint = [&](const RenderSums& sums) { write_sums(sums_file, view_key, sums); };
+  auto start = find_start(scene, view_key, mode, lane_paths);
+  double share = 0.0;
+  if (start) {
+    settings.start = &start->second;
+    double done = 0, all = 0;
+    for (size_t lane = 0; lane < lane_paths.size(); ++lane) {
+      done += start->second.done[lane];
+      all += lane_paths[lane];
+    }
+    share = done / all;
+  }
+  ReferenceImage image = render_reference(medium, reference_view(scene, body, model), settings);
+  ReferenceRender out{to_image_rgb(image),
+                      {image.width, image.height, image.noise},
+                      start ? start->first : std::filesystem::path(),
+                      share};
   // The noise first: a reference in the cache always has its noise.
   write_exr(noise_file, out.noise);
   write_exr(file, out.image);

@@ -31,4 +31,10 @@ expect "--time: 'yesterday'" "$planet" fly --time yesterday
 expect "never reaches latitude" "$planet" fly --lat 60 --height 400000 --orbit-inclination 30 --time 2026-01-01T00:00:00Z
 expect "outside the flight" "$planet" capture --flight "$flights/ascent.json" --out "$work/c" --frames 40:99 --quiet
 expect "not a frame number" "$planet" capture --flight "$flights/ascent.json" --out "$work/c" --frames x:3 --quiet
+mkdir -p "$work/cache/reference"
+echo "not sums" > "$work/cache/reference/earth_noon-4x2-64spp-rgb-0123456789abcdef.sums"
+expect "earth_noon-4x2-64spp-rgb-0123456789abcdef.sums: not the sums of a reference render" \
+  env PLANET_CACHE_DIR="$work/cache" "$planet" reference --scene earth_noon --width 4 --height 2 \
+  --spp 96 --out "$work/r.exr" --quiet
+[ -e "$work/r.exr" ] && { echo "FAIL: a reference was written from broken sums"; failed=1; }
 exit $failed

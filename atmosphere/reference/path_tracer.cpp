@@ -400,6 +400,39 @@ RadianceEstimate estimate_radiance(const ColumnTable& columns, size_t channel,
   return e;
 }
 
+namespace {
+
+// Where a render starts: from nothing, or from the sums it was given,
+// which must be of the same size and have no more paths in any lane.
+RenderSums initial_sums(const ReferenceSettings& settings, const ReferenceView& view,
+                        const std::vector<int>& lane_paths) {
+  const size_t lanes = lane_paths.size();
+  const size_t pixels = size_t(view.width) * size_t(view.height);
+  if (!settings.start) {
+    RenderSums sums;
+    sums.width = view.width;
+    sums.height = view.height;
+    sums.done.assign(lanes, 0);
+    sums.sum.assign(pixels * lanes, 0.0);
+    return sums;
+  }
+  const RenderSums& sums = *settings.start;
+  bool fits = sums.width == view.width && sums.height == view.height &&
+              sums.done.size() == lanes && sums.sum.size() == pixels * lanes;
+  for (size_t lane = 0; fits && lane < lanes; ++lane) {
+    fits = sums.done[lane] >= 0 && sums.done[lane] <= lane_paths[lane];
+  }
+  if (!fits) {
+    throw InputError(fmt::format("the sums to start from are of a {}x{} render with {} lanes, "
+                                 "or have more paths in a lane than {} spp give it",
+                                 sums.width, sums.height, sums.done.size(),
+                                 settings.paths.label()));
+  }
+  return sums;
+}
+
+}  // namespace
+
 ReferenceImage render_reference(const Medium& m, const ReferenceView& view,
                                 const ReferenceSettings& settings) {
   const size_t channels = m.channels.size();
@@ -421,55 +454,79 @@ ReferenceImage render_reference(const Medium& m, const ReferenceView& view,
   std::vector<DepthTable> tables;
   for (const MediumChannel& c : m.channels) tables.emplace_back(columns, c);
 
-  std::atomic<int> next_row{0}, rows_done{0};
-  auto work = [&] {
-    // One lane per (replicate, channel): its own stratified sequence.
-    std::vector<double> sum(lanes);
-    for (int y = next_row++; y < view.height; y = next_row++) {
-      for (int x = 0; x < view.width; ++x) {
-        uint64_t pixel = uint64_t(y) * uint64_t(view.width) + uint64_t(x);
-        glm::dvec3 dir = view.ray_dir(x, y);
-        std::fill(sum.begin(), sum.end(), 0.0);
-        // Lane by lane, which keeps one channel's table in the cache.
-        for (size_t lane = 0; lane < lanes; ++lane) {
-          const DepthTable& table = tables[lane % channels];
-          uint64_t seed = reference::mix64(settings.seed ^ reference::mix64(pixel * lanes + lane));
-          for (int i = 0; i < lane_paths[lane]; ++i) {
-            reference::PathSampler sampler(seed, uint32_t(i));
-            sum[lane] += trace_path(table, camera, dir, sun, settings.trace, sampler);
-          }
-        }
-        std::array<glm::dvec3, kReplicates> replicate{};
-        for (size_t lane = 0; lane < lanes; ++lane) {
-          replicate[lane / channels] +=
-              sum[lane] / lane_paths[lane] * m.channels[lane % channels].rgb_weight;
-        }
-        static_assert(kReplicates == 2, "the mean and spread below are of two replicates");
-        glm::dvec3 mean = 0.5 * (replicate[0] + replicate[1]);
-        glm::dvec3 spread = 0.5 * glm::abs(replicate[0] - replicate[1]);
-        for (int c = 0; c < 3; ++c) {
-          image.rgb[3 * pixel + size_t(c)] = float(mean[c]);
-          image.noise[3 * pixel + size_t(c)] = float(spread[c]);
-        }
-      }
-      ++rows_done;
-    }
-  };
+  const size_t pixels = size_t(view.width) * size_t(view.height);
+  RenderSums sums = initial_sums(settings, view, lane_paths);
+  uint64_t total_paths = 0, traced = 0;
+  for (size_t lane = 0; lane < lanes; ++lane) {
+    total_paths += uint64_t(lane_paths[lane]);
+    traced += uint64_t(sums.done[lane]);
+  }
+  const uint64_t traced_before = traced;
+  const int chunk = std::max(settings.chunk_paths, 1);
   int threads = settings.threads > 0 ? settings.threads
                                      : std::max(1, int(std::thread::hardware_concurrency()));
-  std::vector<std::thread> pool;
-  for (int i = 0; i < threads; ++i) pool.emplace_back(work);
-  if (settings.progress) {
-    while (rows_done.load() < view.height) {
-      settings.progress(double(rows_done.load()) / view.height);
-      std::this_thread::sleep_for(std::chrono::milliseconds(250));
+  // Chunk by chunk: up to `chunk` more paths in every lane of every pixel,
+  // then a checkpoint.
+  while (traced < total_paths) {
+    std::vector<int> until(lanes);
+    uint64_t chunk_total = 0;
+    for (size_t lane = 0; lane < lanes; ++lane) {
+      until[lane] = int(std::min<int64_t>(int64_t(sums.done[lane]) + chunk, lane_paths[lane]));
+      chunk_total += uint64_t(until[lane] - sums.done[lane]);
     }
-    settings.progress(1.0);
+    std::atomic<int> next_row{0}, rows_done{0};
+    auto work = [&] {
+      for (int y = next_row++; y < view.height; y = next_row++) {
+        for (int x = 0; x < view.width; ++x) {
+          uint64_t pixel = uint64_t(y) * uint64_t(view.width) + uint64_t(x);
+          glm::dvec3 dir = view.ray_dir(x, y);
+          // Lane by lane, which keeps one channel's table in the cache.
+          // One lane per (replicate, channel): its own stratified sequence.
+          for (size_t lane = 0; lane < lanes; ++lane) {
+            const DepthTable& table = tables[lane % channels];
+            uint64_t seed =
+                reference::mix64(settings.seed ^ reference::mix64(pixel * lanes + lane));
+            double& sum = sums.sum[pixel * lanes + lane];
+            for (int i = sums.done[lane]; i < until[lane]; ++i) {
+              reference::PathSampler sampler(seed, uint32_t(i));
+              sum += trace_path(table, camera, dir, sun, settings.trace, sampler);
+            }
+          }
+        }
+        ++rows_done;
+      }
+    };
+    std::vector<std::thread> pool;
+    for (int i = 0; i < threads; ++i) pool.emplace_back(work);
+    if (settings.progress) {
+      while (rows_done.load() < view.height) {
+        settings.progress((double(traced) + double(chunk_total) * rows_done.load() / view.height) /
+                          double(total_paths));
+        std::this_thread::sleep_for(std::chrono::milliseconds(250));
+      }
+    }
+    for (auto& t : pool) t.join();
+    sums.done = until;
+    traced += chunk_total;
+    if (settings.checkpoint) settings.checkpoint(sums);
   }
-  for (auto& t : pool) t.join();
-  uint64_t pixel_paths = 0;
-  for (int n : lane_paths) pixel_paths += uint64_t(n);
-  image.paths = uint64_t(view.width) * uint64_t(view.height) * pixel_paths;
+  if (settings.progress) settings.progress(1.0);
+
+  for (size_t pixel = 0; pixel < pixels; ++pixel) {
+    std::array<glm::dvec3, kReplicates> replicate{};
+    for (size_t lane = 0; lane < lanes; ++lane) {
+      replicate[lane / channels] += sums.sum[pixel * lanes + lane] / lane_paths[lane] *
+                                    m.channels[lane % channels].rgb_weight;
+    }
+    static_assert(kReplicates == 2, "the mean and spread below are of two replicates");
+    glm::dvec3 mean = 0.5 * (replicate[0] + replicate[1]);
+    glm::dvec3 spread = 0.5 * glm::abs(replicate[0] - replicate[1]);
+    for (int c = 0; c < 3; ++c) {
+      image.rgb[3 * pixel + size_t(c)] = float(mean[c]);
+      image.noise[3 * pixel + size_t(c)] = float(spread[c]);
+    }
+  }
+  image.paths = pixels * (total_paths - traced_before);
   image.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return image;
 }

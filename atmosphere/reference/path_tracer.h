@@ -100,20 +100,39 @@ struct PathBudget {
   bool operator==(const PathBudget&) const = default;
 };
 
+// The running sums of a render, which make it one that can stop and go
+// on: per pixel and lane, the sum of the radiance of the lane's paths
+// [0, done[lane]). A path's numbers depend only on its pixel, lane and
+// index, and a pixel's sums add its paths in index order, so a render that
+// goes on from sums it wrote part-way, or from the sums of a smaller
+// budget, ends with the same bits as one that never stopped.
+struct RenderSums {
+  int width = 0, height = 0;
+  std::vector<int> done;    // paths traced so far, per lane
+  std::vector<double> sum;  // [pixel * lanes + lane]
+};
+
 struct ReferenceSettings {
   PathBudget paths;
   int threads = 0;    // 0: all cores
   uint64_t seed = 0;  // the scene's seed
   TraceOptions trace;
-  // Called now and then with the fraction of rows done.
+  // Called now and then with the fraction of paths traced.
   std::function<void(double)> progress;
+  // Where the render starts: the sums of an earlier one of the same view,
+  // seed and medium, with at most this budget's paths in every lane.
+  const RenderSums* start = nullptr;
+  // Paths per lane between checkpoints, and what is called at each one
+  // (reference_cache writes the sums there).
+  int chunk_paths = 8192;
+  std::function<void(const RenderSums&)> checkpoint;
 };
 
 struct ReferenceImage {
   int width = 0, height = 0;
   std::vector<float> rgb;    // linear sRGB radiance, rows top-down
   std::vector<float> noise;  // its standard error per pixel and channel
-  uint64_t paths = 0;
+  uint64_t paths = 0;  // traced by this call (not those it started from)
   double seconds = 0;
 };
 

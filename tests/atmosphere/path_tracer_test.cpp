@@ -367,6 +367,51 @@ TEST(PathTracerTest, SameBitsAtOneAndTwoThreads) {
   }
 }
 
+TEST(PathTracerTest, RenderThatStopsAndGoesOnGivesTheSameBits) {
+  // A render in chunks, started from the sums of a smaller budget that
+  // itself stopped after each chunk, ends with the bits of a render of the
+  // whole budget at once: what lets a reference too long for one sitting
+  // be made in several.
+  Scene scene = find_scene("earth_sunset");
+  scene.width = 6;
+  scene.height = 3;
+  Body body = scene_body(scene);
+  AtmosphereModel model = scene_atmosphere(scene, body);
+  Medium medium = make_medium(model, ReferenceMode::kRgb);
+  ReferenceView view = reference_view(scene, body, model);
+  ReferenceSettings whole;
+  whole.paths = PathBudget({40, 12, 90});
+  whole.seed = scene.seed();
+  whole.chunk_paths = 1000;
+  ReferenceImage at_once = render_reference(medium, view, whole);
+
+  ReferenceSettings small = whole;
+  small.paths = PathBudget({20, 12, 30});
+  small.chunk_paths = 4;
+  std::vector<RenderSums> checkpoints;
+  small.checkpoint = [&](const RenderSums& sums) { checkpoints.push_back(sums); };
+  render_reference(medium, view, small);
+  ASSERT_EQ(checkpoints.size(), 4u) << "15 paths in the largest lane, 4 at a time";
+  EXPECT_EQ(checkpoints[0].done, (std::vector<int>{4, 4, 4, 4, 4, 4}));
+  EXPECT_EQ(checkpoints.back().done, (std::vector<int>{10, 6, 15, 10, 6, 15}));
+
+  ReferenceSettings rest = whole;
+  rest.chunk_paths = 7;
+  rest.start = &checkpoints.back();
+  ReferenceImage went_on = render_reference(medium, view, rest);
+  EXPECT_EQ(went_on.paths, 18u * (142 - 62)) << "only the paths not yet traced";
+  ASSERT_EQ(at_once.rgb.size(), went_on.rgb.size());
+  EXPECT_EQ(0, std::memcmp(at_once.rgb.data(), went_on.rgb.data(), at_once.rgb.size() * 4));
+  EXPECT_EQ(0, std::memcmp(at_once.noise.data(), went_on.noise.data(), at_once.noise.size() * 4));
+
+  // Sums with more paths in a lane than the budget gives it cannot be
+  // gone on from.
+  ReferenceSettings fewer = whole;
+  fewer.paths = PathBudget({20, 12, 20});
+  fewer.start = &checkpoints.back();
+  EXPECT_THROW(render_reference(medium, view, fewer), InputError);
+}
+
 TEST(PathTracerTest, ViewRaysAreFrameRendererRays) {
   // The centre pixel's ray is the camera's forward axis, and the top row
   // looks up: rows run top-down as in the EXR files.
