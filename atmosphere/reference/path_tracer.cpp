@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <array>
 #include <atomic>
 #include <chrono>
@@ -321,14 +322,11 @@ PathBudget PathBudget::parse(const std::string& text) {
   while (true) {
     size_t comma = text.find(',', at);
     std::string part = text.substr(at, comma == std::string::npos ? std::string::npos : comma - at);
-    size_t used = 0;
-    long long n = -1;
-    try {
-      n = std::stoll(part, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (part.empty() || used != part.size() || n < 1 || n > (1 << 24)) {
+    // Digits only: stoll alone would take " 5" and "+5" as well.
+    auto digit = [](char ch) { return ch >= '0' && ch <= '9'; };
+    bool digits = !part.empty() && part.size() <= 9 && std::all_of(part.begin(), part.end(), digit);
+    long long n = digits ? std::stoll(part) : -1;
+    if (n < 1 || n > (1 << 24)) {
       throw InputError(fmt::format(
           "'{}' is not a path count: give paths per pixel, 1 to {}, in all (98304) or per "
           "channel (32768,131072,524288)",

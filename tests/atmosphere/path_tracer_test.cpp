@@ -256,7 +256,7 @@ TEST(PathTracerTest, PathBudgetsSpreadOverLanes) {
   EXPECT_EQ(per_channel.label(), "4,10,7");
   EXPECT_EQ(per_channel.lane_paths(3), (std::vector<int>{2, 5, 4, 2, 5, 3}));
   EXPECT_EQ(PathBudget::parse("98304"), PathBudget(98304));
-  for (const char* bad : {"", "12x", "0", "-6", "4,,4", "4,", "99999999999"}) {
+  for (const char* bad : {"", "12x", "0", "-6", "4,,4", "4,", "99999999999", " 5", "+5", "4, 4"}) {
     EXPECT_THROW(PathBudget::parse(bad), InputError) << bad;
   }
   EXPECT_THROW(PathBudget(5).lane_paths(3), InputError);                    // a lane with none
