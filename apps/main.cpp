@@ -28,7 +28,11 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help arrives as a ParseError that exits 0; anything else the
+    // parser rejects is bad input like the rest: one line, status 2.
+    if (e.get_exit_code() == 0) return app.exit(e);
+    std::fprintf(stderr, "planet: error: %s (--help lists the options)\n", e.what());
+    return 2;
   } catch (const planet::InputError& e) {
     report(e);
     return 2;

@@ -31,6 +31,9 @@ expect "--time: 'yesterday'" "$planet" fly --time yesterday
 expect "never reaches latitude" "$planet" fly --lat 60 --height 400000 --orbit-inclination 30 --time 2026-01-01T00:00:00Z
 expect "outside the flight" "$planet" capture --flight "$flights/ascent.json" --out "$work/c" --frames 40:99 --quiet
 expect "not a frame number" "$planet" capture --flight "$flights/ascent.json" --out "$work/c" --frames x:3 --quiet
+expect "--width: Value 0 not in range 1 to 8192" "$planet" reference --scene earth_noon --width 0 --out "$work/r.exr"
+expect "not expected: --bogus" "$planet" reference --bogus
+expect "A subcommand is required" "$planet"
 mkdir -p "$work/cache/reference"
 echo "not sums" > "$work/cache/reference/earth_noon-4x2-64spp-rgb-0123456789abcdef.sums"
 expect "earth_noon-4x2-64spp-rgb-0123456789abcdef.sums: not the sums of a reference render" \
