@@ -48,7 +48,7 @@ const AccuracyCase kCases[] = {
     {"earth_noon", PathBudget({40960, 147456, 335872}), 0.011},
     {"earth_400km", PathBudget({98304, 180224, 655360}), 0.016},
     {"earth_sunset", PathBudget({24576, 126976, 811008}), 0.025},
-    {"earth_twilight", 196608, 0.035},
+    {"earth_twilight", PathBudget({430080, 339968, 704512}), 0.035},
     {"mars_noon", 196608, 0.032},      {"mars_sunset", PathBudget({184320, 143360, 131072}), 0.085},
 };
 
