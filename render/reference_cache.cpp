@@ -234,11 +234,6 @@ std::optional<std::pair<std::filesystem::path, RenderSums>> find_start(
   std::error_code ec;
   std::string prefix = fmt::format("{}-{}x{}-", scene.name, scene.width, scene.height);
   std::string mode_part = fmt::format("spp-{}-", to_string(mode));
-  auto traced = [](const RenderSums& s) {
-    int64_t n = 0;
-    for (int d : s.done) n += d;
-    return n;
-  };
   for (const auto& entry : std::filesystem::directory_iterator(reference_cache_dir(), ec)) {
     std::string name = entry.path().filename().string();
     if (entry.path().extension() != ".sums" || name.rfind(prefix, 0) != 0 ||
@@ -246,12 +241,7 @@ std::optional<std::pair<std::filesystem::path, RenderSums>> find_start(
       continue;
     }
     std::optional<RenderSums> sums = read_sums(entry.path(), view_key);
-    if (!sums || sums->done.size() != lane_paths.size()) continue;
-    bool fits = true;
-    for (size_t lane = 0; lane < lane_paths.size(); ++lane) {
-      fits = fits && sums->done[lane] <= lane_paths[lane];
-    }
-    if (fits && (!best || traced(*sums) > traced(best->second))) {
+    if (sums && sums->fits(lane_paths) && (!best || sums->traced() > best->second.traced())) {
       best.emplace(entry.path(), std::move(*sums));
     }
   }
@@ -283,12 +273,9 @@ ReferenceRender reference_render(const Scene& scene, const PathBudget& paths, Re
   double share = 0.0;
   if (start) {
     settings.start = &start->second;
-    double done = 0, all = 0;
-    for (size_t lane = 0; lane < lane_paths.size(); ++lane) {
-      done += start->second.done[lane];
-      all += lane_paths[lane];
-    }
-    share = done / all;
+    double all = 0;
+    for (int n : lane_paths) all += n;
+    share = double(start->second.traced()) / all;
   }
   ReferenceImage image = render_reference(medium, reference_view(scene, body, model), settings);
   ReferenceRender out{to_image_rgb(image),

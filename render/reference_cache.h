@@ -56,7 +56,8 @@ struct ReferenceRender {
 };
 
 // The scene's reference and its noise: read from the cache, or rendered on
-// all cores (from the furthest sums there that fit) and cached. `progress` sees the fraction done while rendering.
+// all cores (from the furthest sums there that fit) and cached. `progress`
+// sees the fraction done while rendering.
 ReferenceRender reference_render(const Scene& scene, const PathBudget& paths,
                                  ReferenceMode mode = ReferenceMode::kRgb,
                                  const std::function<void(double)>& progress = {});

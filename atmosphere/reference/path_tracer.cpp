@@ -398,6 +398,20 @@ RadianceEstimate estimate_radiance(const ColumnTable& columns, size_t channel,
   return e;
 }
 
+int64_t RenderSums::traced() const {
+  int64_t n = 0;
+  for (int d : done) n += d;
+  return n;
+}
+
+bool RenderSums::fits(const std::vector<int>& lane_paths) const {
+  if (done.size() != lane_paths.size()) return false;
+  for (size_t lane = 0; lane < done.size(); ++lane) {
+    if (done[lane] < 0 || done[lane] > lane_paths[lane]) return false;
+  }
+  return true;
+}
+
 namespace {
 
 // Where a render starts: from nothing, or from the sums it was given,
@@ -415,12 +429,8 @@ RenderSums initial_sums(const ReferenceSettings& settings, const ReferenceView& 
     return sums;
   }
   const RenderSums& sums = *settings.start;
-  bool fits = sums.width == view.width && sums.height == view.height &&
-              sums.done.size() == lanes && sums.sum.size() == pixels * lanes;
-  for (size_t lane = 0; fits && lane < lanes; ++lane) {
-    fits = sums.done[lane] >= 0 && sums.done[lane] <= lane_paths[lane];
-  }
-  if (!fits) {
+  if (sums.width != view.width || sums.height != view.height ||
+      sums.sum.size() != pixels * lanes || !sums.fits(lane_paths)) {
     throw InputError(fmt::format("the sums to start from are of a {}x{} render with {} lanes, "
                                  "or have more paths in a lane than {} spp give it",
                                  sums.width, sums.height, sums.done.size(),
@@ -454,12 +464,10 @@ ReferenceImage render_reference(const Medium& m, const ReferenceView& view,
 
   const size_t pixels = size_t(view.width) * size_t(view.height);
   RenderSums sums = initial_sums(settings, view, lane_paths);
-  uint64_t total_paths = 0, traced = 0;
-  for (size_t lane = 0; lane < lanes; ++lane) {
-    total_paths += uint64_t(lane_paths[lane]);
-    traced += uint64_t(sums.done[lane]);
-  }
-  const uint64_t traced_before = traced;
+  uint64_t total_paths = 0;
+  for (int n : lane_paths) total_paths += uint64_t(n);
+  const uint64_t traced_before = uint64_t(sums.traced());
+  uint64_t traced = traced_before;
   const int chunk = std::max(settings.chunk_paths, 1);
   int threads = settings.threads > 0 ? settings.threads
                                      : std::max(1, int(std::thread::hardware_concurrency()));

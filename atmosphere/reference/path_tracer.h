@@ -110,6 +110,12 @@ struct RenderSums {
   int width = 0, height = 0;
   std::vector<int> done;    // paths traced so far, per lane
   std::vector<double> sum;  // [pixel * lanes + lane]
+
+  // Paths traced so far per pixel, all lanes together.
+  int64_t traced() const;
+  // Whether a render with these paths per lane can go on from here: as
+  // many lanes, and no more paths in any of them.
+  bool fits(const std::vector<int>& lane_paths) const;
 };
 
 struct ReferenceSettings {
