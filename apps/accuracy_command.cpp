@@ -4,10 +4,12 @@
 // relative RMSE over the open sky alone, and the mean signed error (bias);
 // the images are written where a person can look at them.
 #include "apps/commands.h"
-#include "render/gl/context.h"
-#include "render/reference_cache.h"
-#include "render/technique_accuracy.h"
-#include "sim/error.h"
+#include "core/error.h"
+#include "core/tone_map.h"
+#include "gl/context.h"
+#include "lab/accuracy.h"
+#include "lab/reference_cache.h"
+#include "lab/scene_render.h"
 
 #include <fmt/format.h>
 
@@ -49,11 +51,9 @@ void write_images(const std::filesystem::path& dir, const Scene& scene, const Im
                   const ImageRGB& reference, const TechniqueAccuracy& accuracy) {
   std::filesystem::create_directories(dir);
   write_exr(dir / (scene.name + "_technique.exr"), technique);
-  write_tone_mapped_png(dir / (scene.name + "_technique.png"), enlarged(technique),
-                        scene.exposure);
+  write_tone_mapped_png(dir / (scene.name + "_technique.png"), enlarged(technique), scene.exposure);
   write_exr(dir / (scene.name + "_reference.exr"), reference);
-  write_tone_mapped_png(dir / (scene.name + "_reference.png"), enlarged(reference),
-                        scene.exposure);
+  write_tone_mapped_png(dir / (scene.name + "_reference.png"), enlarged(reference), scene.exposure);
   // The error image: |technique - reference| / mean reference, shown so
   // that 10% of the mean is mid-grey-bright (exposure 5 through the curve).
   ImageRGB error = accuracy.signed_error;
@@ -92,8 +92,8 @@ void run_accuracy(const AccuracyArgs& args) {
         bias += accuracy.signed_error.pixels[i];
       }
       bias /= double(std::max(accuracy.pixels, 1));
-      std::printf("%-16s %-3s %11.4g %11.4g %8.2f%% %8.2f%% %8.2f%% %+5.1f%%\n",
-                  scene.name.c_str(), names[c], e.rmse, e.mean_reference, 100 * e.relative(),
+      std::printf("%-16s %-3s %11.4g %11.4g %8.2f%% %8.2f%% %8.2f%% %+5.1f%%\n", scene.name.c_str(),
+                  names[c], e.rmse, e.mean_reference, 100 * e.relative(),
                   100 * noise[c] / std::max(e.mean_reference, 1e-30),
                   100 * accuracy.sky_channels[c].relative(), 100 * bias);
     }

@@ -1,8 +1,8 @@
 // planet capture: a scripted flight rendered headless into EXR + PNG frames.
 #include "apps/commands.h"
+#include "core/error.h"
+#include "gl/context.h"
 #include "render/capture.h"
-#include "render/gl/context.h"
-#include "sim/error.h"
 #include "sim/flight_script.h"
 
 #include <fmt/format.h>

@@ -2,11 +2,11 @@
 // Dear ImGui HUD to change body, atmosphere technique, time and exposure.
 #include "apps/commands.h"
 #include "atmosphere/gpu/technique.h"
+#include "core/error.h"
+#include "core/image_io.h"
+#include "gl/context.h"
 #include "render/frame.h"
-#include "render/gl/context.h"
-#include "render/image_io.h"
 #include "sim/body.h"
-#include "sim/error.h"
 #include "sim/flight_recorder.h"
 #include "sim/free_flight.h"
 #include "sim/orbit_flight.h"
@@ -137,7 +137,7 @@ class FlySession {
     std::optional<AtmosphereModel> atmosphere;
     std::unique_ptr<AtmosphereTechnique> technique;
     if (body.has_atmosphere()) {
-      atmosphere = parse_atmosphere(JsonObject(body.atmosphere, body.file.string(), "atmosphere"));
+      atmosphere = load_atmosphere(body);
       technique = make_technique(technique_);
     }
     // A new body builds a new terrain, which takes the budget now set.

@@ -2,10 +2,10 @@
 // itself (apps/commands.h) and does its work in its callback; every error
 // is caught here once and printed as one line.
 #include "apps/commands.h"
-#include "sim/error.h"
+#include "core/error.h"
 
-#include <cstdio>
 #include <unistd.h>
+#include <cstdio>
 
 // One line on stderr; on a terminal, first end any progress line.
 static void report(const std::exception& e) {

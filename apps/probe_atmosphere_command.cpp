@@ -1,10 +1,10 @@
 // planet probe transmittance | sky: the atmosphere model's quantities at a
 // height above the bottom of the atmosphere, with their units.
 #include "apps/commands.h"
+#include "atmosphere/math/shared_math.h"
 #include "atmosphere/reference/path_tracer.h"
-#include "atmosphere/shared_math.h"
+#include "core/error.h"
 #include "sim/body.h"
-#include "sim/error.h"
 
 #include <fmt/format.h>
 
@@ -28,10 +28,7 @@ struct ProbeArgs {
 
 AtmosphereModel load_model(const std::string& planet, Body& body) {
   body = load_body(find_body_file(planet));
-  if (!body.has_atmosphere()) {
-    throw InputError(fmt::format("{}: {} has no atmosphere", body.file.string(), body.name));
-  }
-  return parse_atmosphere(JsonObject(body.atmosphere, body.file.string(), "atmosphere"));
+  return load_atmosphere(body);
 }
 
 void run_transmittance(const ProbeArgs& args) {
@@ -40,9 +37,10 @@ void run_transmittance(const ProbeArgs& args) {
   Medium medium = make_medium(model, parse_reference_mode(args.mode));
   double r = model.bottom_radius + args.height_m;
   double mu = std::cos(glm::radians(args.zenith_deg));
-  std::printf("%s: transmittance from height %g m (r = %.0f m) at view zenith %g deg to the top "
-              "of the atmosphere (%.0f m)\n",
-              body.name.c_str(), args.height_m, r, args.zenith_deg, model.top_radius);
+  std::printf(
+      "%s: transmittance from height %g m (r = %.0f m) at view zenith %g deg to the top "
+      "of the atmosphere (%.0f m)\n",
+      body.name.c_str(), args.height_m, r, args.zenith_deg, model.top_radius);
   shared::Atmosphere a = shared::to_shared(model);
   if (shared::ray_intersects_ground(a, r, mu)) {
     std::printf("the ray meets the ground %.0f m away: transmittance 0 (the planet's shadow)\n",
@@ -76,13 +74,15 @@ void run_sky(const ProbeArgs& args) {
   // Azimuths from the sun's: the sun lies in the x-z plane.
   glm::dvec3 view(std::sin(vz) * std::cos(va), std::sin(vz) * std::sin(va), std::cos(vz));
   glm::dvec3 sun(std::sin(sz), 0.0, std::cos(sz));
-  std::printf("%s: sky radiance at height %g m, view zenith %g deg, azimuth %g deg from the sun, "
-              "sun zenith %g deg\n",
-              body.name.c_str(), args.height_m, args.view_zenith_deg, args.view_azimuth_deg,
-              args.sun_zenith_deg);
-  std::printf("path-traced reference, %d paths per wavelength, all scattering orders, ground "
-              "albedo %g; radiance in W m^-2 sr^-1 nm^-1 (+- one standard error)\n",
-              args.paths, model.ground_albedo);
+  std::printf(
+      "%s: sky radiance at height %g m, view zenith %g deg, azimuth %g deg from the sun, "
+      "sun zenith %g deg\n",
+      body.name.c_str(), args.height_m, args.view_zenith_deg, args.view_azimuth_deg,
+      args.sun_zenith_deg);
+  std::printf(
+      "path-traced reference, %d paths per wavelength, all scattering orders, ground "
+      "albedo %g; radiance in W m^-2 sr^-1 nm^-1 (+- one standard error)\n",
+      args.paths, model.ground_albedo);
   std::printf("%15s %15s %15s\n", "wavelength_nm", "radiance", "std_error");
   glm::dvec3 rgb(0.0);
   TraceOptions options;
@@ -100,8 +100,8 @@ void run_sky(const ProbeArgs& args) {
 
 void add_probe_atmosphere_commands(CLI::App& probe) {
   auto args = std::make_shared<ProbeArgs>();
-  CLI::App* t = probe.add_subcommand(
-      "transmittance", "Transmittance to the top of the atmosphere per wavelength");
+  CLI::App* t = probe.add_subcommand("transmittance",
+                                     "Transmittance to the top of the atmosphere per wavelength");
   t->add_option("--planet", args->planet, "Body name or file")->capture_default_str();
   t->add_option("--height", args->height_m, "Metres above the bottom of the atmosphere")
       ->check(CLI::Range(0.0, 1e9));

@@ -1,7 +1,7 @@
 // planet probe sun: where the sun stands over a place at a UTC instant.
 #include "apps/commands.h"
+#include "core/error.h"
 #include "sim/body.h"
-#include "sim/error.h"
 #include "sim/geodesy.h"
 #include "sim/mars24.h"
 #include "sim/sun_ephemeris.h"

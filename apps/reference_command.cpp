@@ -1,17 +1,18 @@
 // planet reference: the path-traced ground truth of a canonical scene, as
 // linear EXR (and a tone-mapped PNG beside it), through the reference cache.
 #include "apps/commands.h"
-#include "render/reference_cache.h"
-#include "render/technique_accuracy.h"
-#include "sim/error.h"
+#include "core/error.h"
+#include "core/tone_map.h"
+#include "lab/accuracy.h"
+#include "lab/reference_cache.h"
 
 #include <fmt/format.h>
 
+#include <unistd.h>
 #include <array>
 #include <chrono>
 #include <cstdio>
 #include <string>
-#include <unistd.h>
 
 namespace planet::apps {
 
@@ -82,12 +83,13 @@ void add_reference_command(CLI::App& app) {
   auto args = std::make_shared<ReferenceArgs>();
   CLI::App* cmd = app.add_subcommand(
       "reference", "Path-trace a canonical scene's ground truth (cached, see --help)");
-  cmd->footer(fmt::format("Renders are cached by a hash of model, scene, spp, mode and tracer "
-                          "version in {}. A render writes its running sums there every few "
-                          "minutes (.sums): run it again and it goes on from them, and a "
-                          "larger --spp for the same view starts from the sums of a smaller "
-                          "one.",
-                          reference_cache_dir().string()));
+  cmd->footer(
+      fmt::format("Renders are cached by a hash of model, scene, spp, mode and tracer "
+                  "version in {}. A render writes its running sums there every few "
+                  "minutes (.sums): run it again and it goes on from them, and a "
+                  "larger --spp for the same view starts from the sums of a smaller "
+                  "one.",
+                  reference_cache_dir().string()));
   cmd->add_option("--scene", args->scene, "Canonical scene name (see --list)");
   cmd->add_option("--spp", args->paths,
                   "Paths per pixel: in all (98304), or per channel (32768,131072,524288)");

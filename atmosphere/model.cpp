@@ -1,5 +1,7 @@
 #include "atmosphere/model.h"
 
+#include "core/error.h"
+
 #include <fmt/format.h>
 
 #include <glm/gtc/constants.hpp>
@@ -9,8 +11,9 @@
 
 namespace planet {
 
-double DensityProfile::density(double altitude) const {
-  const DensityLayer& l = altitude < layers[0].width ? layers[0] : layers[1];
+double density_at(const DensityProfile& profile, double altitude) {
+  const DensityLayer& l =
+      altitude < profile.layers[0].width ? profile.layers[0] : profile.layers[1];
   // The exponential only where the layer has one: this runs millions of
   // times a second in the reference's path tracer.
   double e = l.exp_term != 0.0 ? l.exp_term * std::exp(l.exp_scale * altitude) : 0.0;
@@ -26,7 +29,7 @@ glm::dvec3 rgb(JsonObject& o, const std::string& key) {
 }
 
 DensityProfile parse_density(JsonObject d, double thickness) {
-  DensityProfile p;
+  DensityProfile p{};
   std::string type = d.string("type");
   if (type == "exponential") {
     double H = d.number("scale_height_m", 1.0, 1e7);
@@ -91,7 +94,8 @@ std::vector<double> spectral_coefficient(JsonObject& s, const std::string& key,
   double exponent = law.number("exponent", -10.0, 10.0);
   law.finish();
   std::vector<double> out;
-  for (double lambda : wavelengths) out.push_back(value * std::pow(reference_nm / lambda, exponent));
+  for (double lambda : wavelengths)
+    out.push_back(value * std::pow(reference_nm / lambda, exponent));
   return out;
 }
 
@@ -101,8 +105,8 @@ AtmosphereSpectrum parse_spectrum(JsonObject s) {
   out.wavelengths_nm = s.number_list("wavelengths_nm", 360.0, 830.0);
   const auto& w = out.wavelengths_nm;
   if (w.size() < kMinSpectralSamples) {
-    s.fail("wavelengths_nm", fmt::format("{} samples; at least {} are needed", w.size(),
-                                         kMinSpectralSamples));
+    s.fail("wavelengths_nm",
+           fmt::format("{} samples; at least {} are needed", w.size(), kMinSpectralSamples));
   }
   for (size_t i = 1; i < w.size(); ++i) {
     if (w[i] <= w[i - 1]) s.fail("wavelengths_nm", "must be strictly increasing");
@@ -119,7 +123,8 @@ AtmosphereSpectrum parse_spectrum(JsonObject s) {
     for (size_t i = 0; i < w.size(); ++i) {
       double absorption = extinction[i] - out.mie_scattering[i];
       if (absorption < -1e-15) {
-        s.fail("mie_extinction", fmt::format("must not be below mie_scattering (at {:g} nm)", w[i]));
+        s.fail("mie_extinction",
+               fmt::format("must not be below mie_scattering (at {:g} nm)", w[i]));
       }
       out.mie_absorption.push_back(std::max(absorption, 0.0));
     }
@@ -149,8 +154,8 @@ AtmosphereModel parse_atmosphere(JsonObject a) {
   m.bottom_radius = a.number("bottom_radius_m", 1.0, 1e9);
   m.top_radius = a.number("top_radius_m", 1.0, 1e9);
   if (m.top_radius <= m.bottom_radius) {
-    a.fail("top_radius_m", fmt::format("{:g} must be above bottom_radius_m {:g}", m.top_radius,
-                                       m.bottom_radius));
+    a.fail("top_radius_m",
+           fmt::format("{:g} must be above bottom_radius_m {:g}", m.top_radius, m.bottom_radius));
   }
   double thickness = m.top_radius - m.bottom_radius;
   if (a.has("wavelengths_nm")) {
@@ -175,6 +180,13 @@ AtmosphereModel parse_atmosphere(JsonObject a) {
   a.string_or("source", "");
   a.finish();
   return m;
+}
+
+AtmosphereModel load_atmosphere(const Body& body) {
+  if (!body.has_atmosphere()) {
+    throw InputError(fmt::format("{}: {} has no atmosphere", body.file.string(), body.name));
+  }
+  return parse_atmosphere(JsonObject(body.atmosphere, body.file.string(), "atmosphere"));
 }
 
 }  // namespace planet

@@ -4,7 +4,9 @@
 // scattering and absorption coefficients at sample wavelengths and a
 // density profile of layers. Every technique and the ground truth read this
 // one description. Values come from the body's file, never from code.
-#include "sim/json_reader.h"
+#include "atmosphere/math/definitions.h"
+#include "core/json_reader.h"
+#include "sim/body.h"
 
 #include <glm/glm.hpp>
 
@@ -15,22 +17,17 @@
 
 namespace planet {
 
-// Bruneton 2017's layer: density(h) = clamp(exp_term * exp(exp_scale * h)
-// + linear_term * h + constant_term, 0, 1) for h below `width` (the last
-// layer extends to the top). Exponential, linear and tent profiles are all
-// one or two such layers.
-struct DensityLayer {
-  double width = 0;  // metres
-  double exp_term = 0;
-  double exp_scale = 0;    // 1/m
-  double linear_term = 0;  // 1/m
-  double constant_term = 0;
-};
+// A density profile (Bruneton 2017's two layers) is the shared math's own
+// type (atmosphere/shaders/definitions.glsl), so that the model, the ground
+// truth and the shaders read one description.
+using DensityLayer = shared::DensityLayer;
+using DensityProfile = shared::DensityProfile;
 
-struct DensityProfile {
-  std::array<DensityLayer, 2> layers{};
-  double density(double altitude) const;
-};
+// The density at an altitude, as profile_density (density.glsl) has it, but
+// for the ground truth's path tracer, which calls it millions of times a
+// second: the exponential only where the layer has one, and the altitude
+// as it is (the tracer never samples below the bottom).
+double density_at(const DensityProfile& profile, double altitude);
 
 enum class PhaseKind { kRayleigh, kMie, kNone };
 
@@ -39,7 +36,7 @@ struct AtmosphereComponent {
   PhaseKind phase = PhaseKind::kNone;
   glm::dvec3 scattering{0.0};  // 1/m at the RGB wavelengths
   glm::dvec3 absorption{0.0};  // 1/m
-  DensityProfile density;
+  DensityProfile density{};
   glm::dvec3 extinction() const { return scattering + absorption; }
 };
 
@@ -76,6 +73,9 @@ constexpr double kSpectrumMinNm = 380.0, kSpectrumMaxNm = 780.0;
 
 // Parses and validates the "atmosphere" object of a body file.
 AtmosphereModel parse_atmosphere(JsonObject atmosphere);
+// The body's atmosphere, parsed from its file; InputError naming the file
+// for an airless body.
+AtmosphereModel load_atmosphere(const Body& body);
 
 // The model with its scattering coefficients (Rayleigh and Mie, RGB and
 // spectral) multiplied by `factor`: the dense variants of the scenes.

@@ -1,20 +1,20 @@
 #include "render/capture.h"
 
 #include "atmosphere/gpu/technique.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/image_io.h"
+#include "core/progress.h"
 #include "render/frame.h"
-#include "render/image_io.h"
-#include "sim/error.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <glm/gtc/constants.hpp>
 
-#include <unistd.h>
 #include <algorithm>
 #include <chrono>
 #include <csignal>
-#include <cstdio>
 
 namespace planet {
 
@@ -64,22 +64,6 @@ nlohmann::json sidecar(const FlightScript& script, const FlightPath& path, const
   return j;
 }
 
-// On a terminal, one line rewritten in place; in a log, a line per tenth.
-void report_progress(const std::string& name, int done, int total,
-                     std::chrono::steady_clock::time_point start) {
-  double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  double rate = done / std::max(elapsed, 1e-9);
-  double left = (total - done) / rate;
-  if (isatty(fileno(stderr))) {
-    std::fprintf(stderr, "\rcapture %s: frame %d/%d  %.1f frames/s  %.0f s left   ", name.c_str(),
-                 done, total, rate, left);
-    std::fflush(stderr);
-  } else if (done == total || (done * 10) / total != ((done - 1) * 10) / total) {
-    std::fprintf(stderr, "capture %s: frame %d/%d  %.1f frames/s  %.0f s left\n", name.c_str(),
-                 done, total, rate, left);
-  }
-}
-
 }  // namespace
 
 CaptureResult run_capture(const FlightScript& script, const CaptureOptions& options) {
@@ -93,8 +77,7 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
   std::optional<AtmosphereModel> atmosphere;
   std::unique_ptr<AtmosphereTechnique> technique;
   if (script.body.has_atmosphere()) {
-    atmosphere = parse_atmosphere(
-        JsonObject(script.body.atmosphere, script.body.file.string(), "atmosphere"));
+    atmosphere = load_atmosphere(script.body);
     try {
       technique = make_technique(script.technique);
     } catch (const InputError& e) {
@@ -118,13 +101,14 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
   Geodesy geodesy(script.body.shape);
 
   CaptureResult result;
+  Progress progress("capture " + script.name, end - first, "frame", !options.progress);
   g_interrupted = 0;
   auto previous_handler = std::signal(SIGINT, on_interrupt);
   auto start = std::chrono::steady_clock::now();
   for (int frame = first; frame < end; ++frame) {
     if (g_interrupted) {
       std::signal(SIGINT, previous_handler);
-      if (options.progress && isatty(fileno(stderr))) std::fprintf(stderr, "\n");
+      progress.finish();
       throw CaptureInterrupted(
           fmt::format("interrupted: frames {} to {} are complete in {}; resume with --frames {}:{}",
                       first, frame - 1, options.out_dir.string(), frame,
@@ -138,19 +122,19 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
     std::string stem = fmt::format("frame_{:05d}", frame);
     write_exr(options.out_dir / (stem + ".exr"), script.width, script.height, renderer.read_hdr());
     write_png(options.out_dir / (stem + ".png"), script.width, script.height, renderer.read_ldr());
-    write_text_file(options.out_dir / (stem + ".json"),
-                    sidecar(script, path, geodesy, frame, t, camera, exposure, sun, stats,
-                            renderer.terrain_stats())
-                            .dump(2) +
-                        "\n");
+    write_file_atomically(options.out_dir / (stem + ".json"),
+                          sidecar(script, path, geodesy, frame, t, camera, exposure, sun, stats,
+                                  renderer.terrain_stats())
+                                  .dump(2) +
+                              "\n");
     if (frame == first) result.first_png = options.out_dir / (stem + ".png");
     result.last_png = options.out_dir / (stem + ".png");
     ++result.frames;
-    if (options.progress) report_progress(script.name, frame + 1 - first, end - first, start);
+    progress.update(frame + 1 - first);
   }
   result.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (options.progress && isatty(fileno(stderr))) std::fprintf(stderr, "\n");
+  progress.finish();
 
   nlohmann::json summary = {
       {"flight", script.file.string()},
@@ -160,7 +144,7 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
       {"technique", script.technique},
       {"wall_seconds", result.wall_seconds},
   };
-  write_text_file(finished_marker, summary.dump(2) + "\n");
+  write_file_atomically(finished_marker, summary.dump(2) + "\n");
   std::signal(SIGINT, previous_handler);
   return result;
 }

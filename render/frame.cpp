@@ -2,10 +2,8 @@
 
 #include "atmosphere/atmosphere_space.h"
 #include "atmosphere/gpu/atmosphere_block.h"
-#include "render/gl/context.h"
-#include "sim/error.h"
-
-#include <glm/gtx/matrix_operation.hpp>
+#include "core/error.h"
+#include "gl/context.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -13,36 +11,10 @@
 
 namespace planet {
 
-namespace {
-
-Framebuffer make_framebuffer(GLuint color, GLuint depth) {
-  GLuint fbo = 0;
-  glCreateFramebuffers(1, &fbo);
-  glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, color, 0);
-  if (depth) glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, depth, 0);
-  if (glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-    glDeleteFramebuffers(1, &fbo);
-    throw SystemError("framebuffer incomplete");
-  }
-  return Framebuffer(fbo);
-}
-
-}  // namespace
-
 double FrameStats::total_gpu_ms() const {
   double sum = 0;
   for (const auto& p : passes) sum += p.gpu_ms;
   return sum;
-}
-
-glm::mat4 clip_from_view_reversed_z(double vertical_fov, double aspect, double near) {
-  double f = 1.0 / std::tan(0.5 * vertical_fov);
-  glm::mat4 m(0.0f);
-  m[0][0] = float(f / aspect);
-  m[1][1] = float(f);
-  m[3][2] = float(near);  // z_clip = near
-  m[2][3] = -1.0f;        // w_clip = -z_view
-  return m;
 }
 
 FrameRenderer::FrameRenderer(int width, int height)
@@ -56,13 +28,10 @@ FrameRenderer::FrameRenderer(int width, int height)
       hdr_fbo_(make_framebuffer(hdr_.id(), 0)),
       ldr_fbo_(make_framebuffer(ldr_.id(), 0)),
       tonemap_program_(
-          Program::graphics("render/shaders/fullscreen.vert", "render/shaders/tonemap.frag")),
+          Program::graphics("gl/shaders/fullscreen.vert", "render/shaders/tonemap.frag")),
       atmosphere_block_(make_buffer(sizeof(AtmosphereBlock), nullptr)) {
   AtmosphereBlock zero{};
   glNamedBufferSubData(atmosphere_block_.id(), 0, sizeof(zero), &zero);
-  GLuint vao = 0;
-  glCreateVertexArrays(1, &vao);
-  empty_vao_ = VertexArray(vao);
   check_gl_errors("FrameRenderer setup");
 }
 
@@ -123,14 +92,8 @@ FrameStats FrameRenderer::render(const Camera& camera, const glm::dvec3& sun_dir
     sky.width = width_;
     sky.height = height_;
     sky.camera_atmo = scale * camera.pos_body;
-    double tan_half = std::tan(0.5 * camera.vertical_fov);
-    double aspect = double(width_) / double(height_);
-    // ndc (x, y, 1) -> view ray (x tan aspect, y tan, -1) -> body -> atmosphere.
-    glm::dmat3 view_ray_from_ndc(glm::dvec3(tan_half * aspect, 0, 0), glm::dvec3(0, tan_half, 0),
-                                 glm::dvec3(0, 0, -1));
-    glm::dmat3 body_from_view = glm::mat3_cast(camera.body_from_camera);
     sky.atmo_ray_from_ndc =
-        glm::mat3(glm::dmat3(glm::diagonal3x3(scale)) * body_from_view * view_ray_from_ndc);
+        glm::mat3(atmo_ray_from_ndc(scale, camera, double(width_) / double(height_)));
     sky.sun_dir_atmo = glm::vec3(glm::normalize(scale * sun_dir_body));
     sky.near = float(camera.near);
     sky.depth_texture = depth_.id();
@@ -146,13 +109,10 @@ FrameStats FrameRenderer::render(const Camera& camera, const glm::dvec3& sun_dir
   }
 
   timer_.begin("tonemap");
-  glBindFramebuffer(GL_FRAMEBUFFER, ldr_fbo_.id());
-  glViewport(0, 0, width_, height_);
-  tonemap_program_.use();
+  tonemap_pass_.begin(ldr_fbo_.id(), width_, height_, tonemap_program_);
   glBindTextureUnit(0, hdr_.id());
   glUniform1f(tonemap_program_.uniform("u_exposure"), float(exposure));
-  glBindVertexArray(empty_vao_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  tonemap_pass_.draw();
   timer_.end();
 
   FrameStats stats;
@@ -167,8 +127,7 @@ std::vector<float> FrameRenderer::read_hdr() const {
 
 std::vector<uint8_t> FrameRenderer::read_ldr() const {
   std::vector<uint8_t> pixels(size_t(width_) * size_t(height_) * 4);
-  glGetTextureImage(ldr_.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(pixels.size()),
-                    pixels.data());
+  glGetTextureImage(ldr_.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(pixels.size()), pixels.data());
   return pixels;
 }
 

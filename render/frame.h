@@ -5,9 +5,10 @@
 // camera: body-frame positions in double never reach the GPU.
 #include "atmosphere/gpu/technique.h"
 #include "atmosphere/model.h"
-#include "render/gl/program.h"
-#include "render/gl/texture.h"
-#include "render/gl/timer.h"
+#include "gl/fullscreen_pass.h"
+#include "gl/program.h"
+#include "gl/texture.h"
+#include "gl/timer.h"
 #include "sim/body.h"
 #include "sim/camera.h"
 #include "terrain/gpu/terrain_renderer.h"
@@ -23,11 +24,6 @@ struct FrameStats {
   std::vector<PassTiming> passes;  // GPU time per pass
   double total_gpu_ms() const;
 };
-
-// Perspective with reversed Z and an infinite far plane: depth = near / view
-// depth, so 1 at the near plane and 0 at infinity (Upchurch and Desbrun
-// 2012; Reed 2015 on why float depth wants it this way round).
-glm::mat4 clip_from_view_reversed_z(double vertical_fov, double aspect, double near);
 
 class FrameRenderer {
  public:
@@ -68,7 +64,7 @@ class FrameRenderer {
   Framebuffer surface_fbo_, hdr_fbo_, ldr_fbo_;
   Program tonemap_program_;
   Buffer atmosphere_block_;
-  VertexArray empty_vao_;
+  FullscreenPass tonemap_pass_;
   TerrainOptions terrain_options_;
   std::unique_ptr<TerrainRenderer> terrain_;
   TerrainStats terrain_stats_;

@@ -43,6 +43,7 @@ for flight in data/flights/*.json; do
   deterministic_json "$out"/*.json
 done
 
+mkdir -p "$work/accuracy"
 for ref in data/reference/*.exr; do
   case "$ref" in *.noise.exr) continue ;; esac
   base="$(basename "$ref")"

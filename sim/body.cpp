@@ -1,7 +1,7 @@
 #include "sim/body.h"
 
-#include "sim/data_paths.h"
-#include "sim/error.h"
+#include "core/data_paths.h"
+#include "core/error.h"
 
 #include <fmt/format.h>
 
@@ -16,7 +16,8 @@ Body load_body(const std::filesystem::path& file) {
 
   JsonObject shape = root.object("shape");
   std::string type = shape.string("type");
-  if (type != "ellipsoid") shape.fail("type", fmt::format("'{}' is not a known shape (ellipsoid)", type));
+  if (type != "ellipsoid")
+    shape.fail("type", fmt::format("'{}' is not a known shape (ellipsoid)", type));
   body.shape.equatorial_radius = shape.number("equatorial_radius_m", 1.0, 1e9);
   // Flattening below 0 would be a prolate body, which GeographicLib allows
   // but nothing here expects; 0.5 is already a very squashed body.

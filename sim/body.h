@@ -1,8 +1,8 @@
 #pragma once
 // A celestial body as the simulation sees it: its name, its shape and the
 // parts of its file that other modules read (the atmosphere).
+#include "core/json_reader.h"
 #include "sim/body_rotation.h"
-#include "sim/json_reader.h"
 #include "sim/sun_ephemeris.h"
 
 #include <nlohmann/json.hpp>

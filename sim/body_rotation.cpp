@@ -1,6 +1,6 @@
 #include "sim/body_rotation.h"
 
-#include "sim/json_reader.h"
+#include "core/json_reader.h"
 
 #include <glm/gtc/constants.hpp>
 

@@ -1,6 +1,6 @@
 #include "sim/flight_recorder.h"
 
-#include "sim/error.h"
+#include "core/error.h"
 
 #include <fmt/format.h>
 

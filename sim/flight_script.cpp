@@ -1,7 +1,7 @@
 #include "sim/flight_script.h"
 
-#include "sim/error.h"
-#include "sim/json_reader.h"
+#include "core/error.h"
+#include "core/json_reader.h"
 
 #include <fmt/format.h>
 

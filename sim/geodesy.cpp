@@ -11,8 +11,8 @@ namespace planet {
 
 Geodesy::Geodesy(const Ellipsoid& shape)
     : shape_(shape),
-      geocentric_(std::make_unique<GeographicLib::Geocentric>(shape.equatorial_radius,
-                                                              shape.flattening)) {}
+      geocentric_(
+          std::make_unique<GeographicLib::Geocentric>(shape.equatorial_radius, shape.flattening)) {}
 Geodesy::~Geodesy() = default;
 Geodesy::Geodesy(Geodesy&&) noexcept = default;
 Geodesy& Geodesy::operator=(Geodesy&&) noexcept = default;
@@ -36,6 +36,21 @@ glm::dmat3 Geodesy::body_from_enu(const Geodetic& g) const {
   glm::dvec3 north(-sl * co, -sl * so, cl);
   glm::dvec3 up(cl * co, cl * so, sl);
   return glm::dmat3(east, north, up);
+}
+
+Camera Geodesy::camera_at(const Geodetic& g, double heading, double pitch,
+                          double vertical_fov) const {
+  Camera camera;
+  camera.pos_body = body_from_geodetic(g);
+  camera.body_from_camera = glm::quat_cast(body_from_enu(g)) * enu_from_camera(heading, pitch, 0.0);
+  camera.vertical_fov = vertical_fov;
+  return camera;
+}
+
+glm::dvec3 Geodesy::body_direction(const Geodetic& g, double elevation, double azimuth) const {
+  glm::dvec3 enu(std::sin(azimuth) * std::cos(elevation), std::cos(azimuth) * std::cos(elevation),
+                 std::sin(elevation));
+  return body_from_enu(g) * enu;
 }
 
 glm::dquat enu_from_camera(double heading, double pitch, double roll) {

@@ -2,6 +2,7 @@
 // Geodetic coordinates on a body's ellipsoid, and the frames that hang off
 // them. Positions in the body-fixed frame are in double, always.
 #include "sim/body.h"
+#include "sim/camera.h"
 
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -32,6 +33,13 @@ class Geodesy {
 
   // Columns are east, north and up at the given place, in the body frame.
   glm::dmat3 body_from_enu(const Geodetic& g) const;
+
+  // A camera at a place, looking along heading (clockwise from north) and
+  // pitch (up positive), radians (enu_from_camera, no roll).
+  Camera camera_at(const Geodetic& g, double heading, double pitch, double vertical_fov) const;
+  // The direction at elevation and azimuth (clockwise from north), radians,
+  // seen from a place: a sun or a look direction as a person gives it.
+  glm::dvec3 body_direction(const Geodetic& g, double elevation, double azimuth) const;
 
   const Ellipsoid& shape() const { return shape_; }
 

@@ -1,6 +1,6 @@
 #include "sim/kepler.h"
 
-#include "sim/error.h"
+#include "core/error.h"
 
 #include <fmt/format.h>
 

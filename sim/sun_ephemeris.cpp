@@ -1,7 +1,7 @@
 #include "sim/sun_ephemeris.h"
 
-#include "sim/error.h"
-#include "sim/json_reader.h"
+#include "core/error.h"
+#include "core/json_reader.h"
 #include "sim/mars24.h"
 
 #include <fmt/format.h>

@@ -1,6 +1,6 @@
 #include "sim/utc_time.h"
 
-#include "sim/error.h"
+#include "core/error.h"
 
 #include <fmt/format.h>
 

@@ -1,6 +1,6 @@
 #include "terrain/height_map.h"
 
-#include "sim/error.h"
+#include "core/error.h"
 
 #include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
@@ -14,8 +14,8 @@ namespace planet {
 HeightMap::HeightMap(const std::filesystem::path& file, double scale, double offset) {
   auto in = OIIO::ImageInput::open(file.string());
   if (!in) {
-    throw InputError(fmt::format("{}: cannot read height map: {}", file.string(),
-                                 OIIO::geterror()));
+    throw InputError(
+        fmt::format("{}: cannot read height map: {}", file.string(), OIIO::geterror()));
   }
   const OIIO::ImageSpec& spec = in->spec();
   width_ = spec.width;
@@ -26,8 +26,8 @@ HeightMap::HeightMap(const std::filesystem::path& file, double scale, double off
   }
   std::vector<float> all(size_t(width_) * size_t(height_) * size_t(spec.nchannels));
   if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, all.data())) {
-    throw InputError(fmt::format("{}: cannot read height map pixels: {}", file.string(),
-                                 in->geterror()));
+    throw InputError(
+        fmt::format("{}: cannot read height map pixels: {}", file.string(), in->geterror()));
   }
   values_.resize(size_t(width_) * size_t(height_));
   range_ = {1e300, -1e300};

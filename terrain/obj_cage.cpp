@@ -1,6 +1,6 @@
 #include "terrain/obj_cage.h"
 
-#include "sim/error.h"
+#include "core/error.h"
 
 #include <fmt/format.h>
 
@@ -78,7 +78,8 @@ ObjCage read_obj_cage(const std::filesystem::path& file) {
         ++n;
       }
       if (n < 3) {
-        throw InputError(fmt::format("{}: a face needs at least three vertices", where(file, line)));
+        throw InputError(
+            fmt::format("{}: a face needs at least three vertices", where(file, line)));
       }
       cage.face_sizes.push_back(n);
       face_lines.push_back(line);

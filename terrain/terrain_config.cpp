@@ -5,8 +5,8 @@
 #include "terrain/obj_cage.h"
 #include "terrain/procedural_height.h"
 
-#include "sim/data_paths.h"
-#include "sim/json_reader.h"
+#include "core/data_paths.h"
+#include "core/json_reader.h"
 
 #include <fmt/format.h>
 
@@ -22,10 +22,14 @@ glm::vec3 color(JsonObject& o, const std::string& key) {
 NoiseLayer parse_layer(JsonObject& o) {
   NoiseLayer layer;
   std::string type = o.string("type");
-  if (type == "fbm") layer.kind = NoiseLayer::Kind::kFbm;
-  else if (type == "ridged") layer.kind = NoiseLayer::Kind::kRidged;
-  else if (type == "craters") layer.kind = NoiseLayer::Kind::kCraters;
-  else o.fail("type", fmt::format("'{}' is not a layer type (fbm, ridged, craters)", type));
+  if (type == "fbm")
+    layer.kind = NoiseLayer::Kind::kFbm;
+  else if (type == "ridged")
+    layer.kind = NoiseLayer::Kind::kRidged;
+  else if (type == "craters")
+    layer.kind = NoiseLayer::Kind::kCraters;
+  else
+    o.fail("type", fmt::format("'{}' is not a layer type (fbm, ridged, craters)", type));
   layer.amplitude = o.number("amplitude_m", 0.0, 1e5);
   layer.wavelength = o.number("wavelength_m", 1.0, 1e8);
   layer.octaves = o.integer("octaves", 1, 24);
@@ -70,8 +74,7 @@ std::shared_ptr<const HeightSource> parse_heights(JsonObject& o, const Body& bod
     return std::make_shared<CageHeight>(read_obj_cage(file), file.string(), mean_radius,
                                         std::move(layers));
   }
-  o.fail("type",
-         fmt::format("'{}' is not a height source (procedural, height_map, cage)", type));
+  o.fail("type", fmt::format("'{}' is not a height source (procedural, height_map, cage)", type));
 }
 
 }  // namespace
@@ -79,9 +82,8 @@ std::shared_ptr<const HeightSource> parse_heights(JsonObject& o, const Body& bod
 TerrainConfig parse_terrain(const Body& body) {
   TerrainConfig config;
   if (body.terrain.is_null()) {
-    config.heights = std::make_shared<ProceduralHeight>(body.shape.equatorial_radius,
-                                                        std::vector<NoiseLayer>{}, 0.0,
-                                                        std::nullopt);
+    config.heights = std::make_shared<ProceduralHeight>(
+        body.shape.equatorial_radius, std::vector<NoiseLayer>{}, 0.0, std::nullopt);
     config.max_level = 12;
     return config;
   }

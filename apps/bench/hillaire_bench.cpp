@@ -6,9 +6,9 @@
 // counters hold each pass's mean (ms).
 #include "atmosphere/gpu/hillaire/hillaire_technique.h"
 #include "atmosphere/gpu/raymarch/raymarch_technique.h"
+#include "core/data_paths.h"
+#include "gl/context.h"
 #include "render/frame.h"
-#include "render/gl/context.h"
-#include "sim/data_paths.h"
 #include "sim/geodesy.h"
 
 #include <benchmark/benchmark.h>
@@ -30,23 +30,18 @@ bool is_atmosphere_pass(const std::string& pass) { return pass != "surface" && p
 void BM_HillaireSky(benchmark::State& state, BenchView view) {
   auto context = GlContext::create_headless();
   Body body = load_body(data_dir() / "planets" / "earth.json");
-  AtmosphereModel model =
-      parse_atmosphere(JsonObject(body.atmosphere, body.file.string(), "atmosphere"));
+  AtmosphereModel model = load_atmosphere(body);
   HillaireTechnique::Settings settings;
   FrameRenderer hillaire(1280, 720), brute_force(1280, 720);
   hillaire.set_body(body, model, std::make_unique<HillaireTechnique>(settings));
   // The same steps per pixel as hillaire's per-pixel path, and the
   // transmittance LUT's 40 toward the sun.
-  brute_force.set_body(body, model,
-                       std::make_unique<RaymarchTechnique>(
-                           RaymarchTechnique::Steps{settings.per_pixel_steps, 40}));
+  brute_force.set_body(
+      body, model,
+      std::make_unique<RaymarchTechnique>(RaymarchTechnique::Steps{settings.per_pixel_steps, 40}));
   Geodesy geodesy(body.shape);
-  Camera camera;
-  camera.pos_body = geodesy.body_from_geodetic(view.place);
-  camera.body_from_camera =
-      glm::quat_cast(geodesy.body_from_enu(view.place)) *
-      enu_from_camera(glm::radians(view.heading_deg), glm::radians(view.pitch_deg), 0.0);
-  camera.vertical_fov = glm::radians(view.fov_deg);
+  Camera camera = geodesy.camera_at(view.place, glm::radians(view.heading_deg),
+                                    glm::radians(view.pitch_deg), glm::radians(view.fov_deg));
   glm::dvec3 sun = geodesy.body_from_enu(view.place) * glm::normalize(glm::dvec3(0.3, 0.5, 0.6));
   // The first frames pay for llvmpipe's shader compilation; not timed.
   hillaire.render(camera, sun, 10.0);
@@ -74,12 +69,21 @@ void BM_HillaireSky(benchmark::State& state, BenchView view) {
 
 // Looking 10 degrees up from 2 m; at the limb from 400 km; straight down
 // on the whole disk from 40 000 km.
-BENCHMARK_CAPTURE(BM_HillaireSky, ground, BenchView{{glm::radians(46.5), glm::radians(8.0), 2.0}, 0.0, 10.0, 60.0})
-    ->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(3);
-BENCHMARK_CAPTURE(BM_HillaireSky, orbit_400km, BenchView{{glm::radians(46.5), glm::radians(8.0), 400e3}, 0.0, -18.0, 60.0})
-    ->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(3);
-BENCHMARK_CAPTURE(BM_HillaireSky, far_40000km, BenchView{{glm::radians(46.5), glm::radians(8.0), 40000e3}, 0.0, -90.0, 30.0})
-    ->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK_CAPTURE(BM_HillaireSky, ground,
+                  BenchView{{glm::radians(46.5), glm::radians(8.0), 2.0}, 0.0, 10.0, 60.0})
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
+BENCHMARK_CAPTURE(BM_HillaireSky, orbit_400km,
+                  BenchView{{glm::radians(46.5), glm::radians(8.0), 400e3}, 0.0, -18.0, 60.0})
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
+BENCHMARK_CAPTURE(BM_HillaireSky, far_40000km,
+                  BenchView{{glm::radians(46.5), glm::radians(8.0), 40000e3}, 0.0, -90.0, 30.0})
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
 
 }  // namespace
 }  // namespace planet

@@ -1,7 +1,7 @@
 // The path tracer's speed on Earth noon at 128x64: paths per second on one
 // core (items_per_second), in RGB and spectral mode, and on all cores.
-#include "atmosphere/reference/path_tracer.h"
-#include "atmosphere/scenes/scene.h"
+#include "atmosphere/reference/reference_render.h"
+#include "lab/scene.h"
 
 #include <benchmark/benchmark.h>
 

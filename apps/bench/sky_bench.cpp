@@ -2,9 +2,9 @@
 // from timer queries (manual time), so that ratios between techniques are
 // measured in one run.
 #include "atmosphere/gpu/technique.h"
+#include "core/data_paths.h"
+#include "gl/context.h"
 #include "render/frame.h"
-#include "render/gl/context.h"
-#include "sim/data_paths.h"
 #include "sim/geodesy.h"
 
 #include <benchmark/benchmark.h>
@@ -16,16 +16,12 @@ namespace {
 void BM_SkyGround(benchmark::State& state, const char* technique) {
   auto context = GlContext::create_headless();
   Body body = load_body(data_dir() / "planets" / "earth.json");
-  AtmosphereModel model =
-      parse_atmosphere(JsonObject(body.atmosphere, body.file.string(), "atmosphere"));
+  AtmosphereModel model = load_atmosphere(body);
   FrameRenderer renderer(1280, 720);
   renderer.set_body(body, model, make_technique(technique));
   Geodesy geodesy(body.shape);
   Geodetic place{glm::radians(46.5), glm::radians(8.0), 2.0};
-  Camera camera;
-  camera.pos_body = geodesy.body_from_geodetic(place);
-  camera.body_from_camera = glm::quat_cast(geodesy.body_from_enu(place)) *
-                            enu_from_camera(0.0, glm::radians(10.0), 0.0);
+  Camera camera = geodesy.camera_at(place, 0.0, glm::radians(10.0), Camera().vertical_fov);
   glm::dvec3 sun = geodesy.body_from_enu(place) * glm::normalize(glm::dvec3(0.3, 0.5, 0.6));
   // The first frame pays for llvmpipe's shader compilation; not timed.
   renderer.render(camera, sun, 10.0);
@@ -34,7 +30,9 @@ void BM_SkyGround(benchmark::State& state, const char* technique) {
     state.SetIterationTime(stats.total_gpu_ms() * 1e-3);
   }
 }
-BENCHMARK_CAPTURE(BM_SkyGround, raymarch, "raymarch")->UseManualTime()->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SkyGround, raymarch, "raymarch")
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace planet

@@ -2,9 +2,9 @@
 // time of terrain + sky at 1280x720 on Earth from the ground, 10 km and
 // 400 km (GPU time from timer queries, tiles all resident first).
 #include "atmosphere/gpu/technique.h"
+#include "core/data_paths.h"
+#include "gl/context.h"
 #include "render/frame.h"
-#include "render/gl/context.h"
-#include "sim/data_paths.h"
 #include "sim/geodesy.h"
 #include "terrain/lod.h"
 #include "terrain/tile_mesh.h"
@@ -26,12 +26,8 @@ Camera camera_above(const Body& body, const TerrainSurface& surface, double abov
   double ground = 0;
   surface.point(glm::normalize(geodesy.body_from_geodetic(place)), &ground);
   place.height = ground + above;
-  Camera camera;
-  camera.pos_body = geodesy.body_from_geodetic(place);
   double pitch = above < 100 ? 4.0 : above < 50e3 ? -15.0 : -30.0;
-  camera.body_from_camera = glm::quat_cast(geodesy.body_from_enu(place)) *
-                            enu_from_camera(glm::radians(60.0), glm::radians(pitch), 0.0);
-  return camera;
+  return geodesy.camera_at(place, glm::radians(60.0), glm::radians(pitch), Camera().vertical_fov);
 }
 
 void BM_TerrainLodSelection(benchmark::State& state) {
@@ -78,7 +74,8 @@ void BM_TerrainTileBuild(benchmark::State& state, const char* name) {
     TileMesh m = build_tile(surface, TileKey{2, 12, 1000 + (i++ % 500), 2000});
     benchmark::DoNotOptimize(m);
   }
-  state.counters["tiles_per_s"] = benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["tiles_per_s"] =
+      benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
 }
 BENCHMARK_CAPTURE(BM_TerrainTileBuild, earth, "earth")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_TerrainTileBuild, mars, "mars")->Unit(benchmark::kMillisecond);
@@ -87,8 +84,7 @@ BENCHMARK_CAPTURE(BM_TerrainTileBuild, asteroid, "asteroid")->Unit(benchmark::kM
 void BM_TerrainFrame(benchmark::State& state) {
   auto context = GlContext::create_headless();
   Body body = earth();
-  AtmosphereModel model =
-      parse_atmosphere(JsonObject(body.atmosphere, body.file.string(), "atmosphere"));
+  AtmosphereModel model = load_atmosphere(body);
   FrameRenderer renderer(1280, 720);
   renderer.set_body(body, model, make_technique("raymarch"));
   Camera camera = camera_above(body, renderer.terrain()->surface(), double(state.range(0)));
@@ -110,7 +106,13 @@ void BM_TerrainFrame(benchmark::State& state) {
   state.counters["tiles_drawn"] = renderer.terrain_stats().tiles_drawn;
   state.counters["triangles"] = double(renderer.terrain_stats().triangles);
 }
-BENCHMARK(BM_TerrainFrame)->Arg(2)->Arg(10000)->Arg(400000)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(3);
+BENCHMARK(BM_TerrainFrame)
+    ->Arg(2)
+    ->Arg(10000)
+    ->Arg(400000)
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
 
 }  // namespace
 }  // namespace planet

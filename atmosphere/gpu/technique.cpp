@@ -2,7 +2,7 @@
 
 #include "atmosphere/gpu/hillaire/hillaire_technique.h"
 #include "atmosphere/gpu/raymarch/raymarch_technique.h"
-#include "sim/error.h"
+#include "core/error.h"
 
 #include <fmt/format.h>
 #include <fmt/ranges.h>

@@ -22,8 +22,8 @@ constexpr std::array<double, 3> kWeights = {0.4679139345726910, 0.36076157304813
                                             0.1713244923791704};
 
 glm::dvec3 densities(const Medium& m, double altitude) {
-  return {m.rayleigh_density.density(altitude), m.mie_density.density(altitude),
-          m.absorber_density.density(altitude)};
+  return {density_at(m.rayleigh_density, altitude), density_at(m.mie_density, altitude),
+          density_at(m.absorber_density, altitude)};
 }
 
 // Where a profile's derivative jumps: the boundary between its layers, and
@@ -190,8 +190,9 @@ double DepthTable::to_top(double r, double mu) const {
   const size_t mu_size = size_t(columns_.mu_size());
   const glm::vec3* row = texels_.data() + size_t(c.i) * mu_size + size_t(c.j);
   const glm::vec3* next = row + mu_size;
-  glm::dvec3 mixed = (1.0 - c.fu) * ((1.0 - c.fv) * glm::dvec3(row[0]) + c.fv * glm::dvec3(row[1])) +
-                     c.fu * ((1.0 - c.fv) * glm::dvec3(next[0]) + c.fv * glm::dvec3(next[1]));
+  glm::dvec3 mixed =
+      (1.0 - c.fu) * ((1.0 - c.fv) * glm::dvec3(row[0]) + c.fv * glm::dvec3(row[1])) +
+      c.fu * ((1.0 - c.fv) * glm::dvec3(next[0]) + c.fv * glm::dvec3(next[1]));
   return std::max(std::exp(mixed.x) - kDepthOffset, 0.0) +
          std::max(std::exp(mixed.y) - kDepthOffset, 0.0) + mixed.z;
 }

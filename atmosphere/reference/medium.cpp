@@ -1,7 +1,7 @@
 #include "atmosphere/reference/medium.h"
 
 #include "atmosphere/spectrum.h"
-#include "sim/error.h"
+#include "core/error.h"
 
 #include <fmt/format.h>
 

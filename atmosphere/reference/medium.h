@@ -37,7 +37,7 @@ struct Medium {
   double mie_g = 0;
   double ground_albedo = 0;
   double sun_angular_radius = 0;
-  DensityProfile rayleigh_density, mie_density, absorber_density;
+  DensityProfile rayleigh_density{}, mie_density{}, absorber_density{};
   std::vector<MediumChannel> channels;
 
   struct Coefficients {
@@ -46,9 +46,9 @@ struct Medium {
     double extinction() const { return scattering_rayleigh + scattering_mie + absorption; }
   };
   Coefficients at(const MediumChannel& c, double altitude) const {
-    double d_r = rayleigh_density.density(altitude);
-    double d_m = mie_density.density(altitude);
-    double d_a = absorber_density.density(altitude);
+    double d_r = density_at(rayleigh_density, altitude);
+    double d_m = density_at(mie_density, altitude);
+    double d_a = density_at(absorber_density, altitude);
     return {c.rayleigh_scattering * d_r, c.mie_scattering * d_m,
             c.mie_absorption * d_m + c.absorber_absorption * d_a};
   }

@@ -1,7 +1,7 @@
 #include "atmosphere/reference/path_tracer.h"
 
-#include "atmosphere/shared_math.h"
-#include "sim/error.h"
+#include "atmosphere/math/shared_math.h"
+#include "core/error.h"
 
 #include <fmt/format.h>
 
@@ -113,14 +113,13 @@ class SegmentDepth {
     while (cell < kSunCells - 1 && edges_[size_t(cell) + 1] < depth) ++cell;
     double lo = edge_t(cell), hi = edge_t(cell + 1);
     double d0 = edges_[size_t(cell)], d1 = edges_[size_t(cell) + 1];
-    double t = d1 > d0 ? lo + (hi - lo) * std::clamp((depth - d0) / (d1 - d0), 0.0, 1.0)
-                       : 0.5 * (lo + hi);
+    double t =
+        d1 > d0 ? lo + (hi - lo) * std::clamp((depth - d0) / (d1 - d0), 0.0, 1.0) : 0.5 * (lo + hi);
     for (int i = 0; i < 100 && hi - lo > 1e-4; ++i) {
       double f = at(t) - depth;
       if (std::abs(f) < 1e-12 * (1.0 + depth)) break;
       (f < 0.0 ? lo : hi) = t;
-      double sigma =
-          m.at(table_.channel(), altitude_of(m, start_ + sign_ * t * dir_)).extinction();
+      double sigma = m.at(table_.channel(), altitude_of(m, start_ + sign_ * t * dir_)).extinction();
       double next = sigma > 0.0 ? t - f / sigma : 0.5 * (lo + hi);
       t = next > lo && next < hi ? next : 0.5 * (lo + hi);
     }
@@ -156,8 +155,8 @@ constexpr double kEvenShare = 0.1;
 // toward the disk's centre, times the sun's transmittance) at the cells'
 // edges, and lands where the light is.
 double sun_along_segment(const DepthTable& table, const glm::dvec3& start, const glm::dvec3& dir,
-                         const SegmentDepth& depth, const glm::dvec3& sun_dir,
-                         double cos_alpha, double u, Rng& rng) {
+                         const SegmentDepth& depth, const glm::dvec3& sun_dir, double cos_alpha,
+                         double u, Rng& rng) {
   const Medium& m = table.medium();
   const MediumChannel& c = table.channel();
   double nu_centre = glm::dot(dir, sun_dir);
@@ -312,72 +311,6 @@ double trace_path(const DepthTable& table, glm::dvec3 origin, glm::dvec3 dir,
   }
 }
 
-PathBudget::PathBudget(std::vector<int> counts) : spp(0), per_channel(std::move(counts)) {
-  for (int n : per_channel) spp += n;
-}
-
-PathBudget PathBudget::parse(const std::string& text) {
-  std::vector<int> counts;
-  size_t at = 0;
-  while (true) {
-    size_t comma = text.find(',', at);
-    std::string part = text.substr(at, comma == std::string::npos ? std::string::npos : comma - at);
-    // Digits only: stoll alone would take " 5" and "+5" as well.
-    auto digit = [](char ch) { return ch >= '0' && ch <= '9'; };
-    bool digits = !part.empty() && part.size() <= 9 && std::all_of(part.begin(), part.end(), digit);
-    long long n = digits ? std::stoll(part) : -1;
-    if (n < 1 || n > (1 << 24)) {
-      throw InputError(fmt::format(
-          "'{}' is not a path count: give paths per pixel, 1 to {}, in all (98304) or per "
-          "channel (32768,131072,524288)",
-          text, 1 << 24));
-    }
-    counts.push_back(int(n));
-    if (comma == std::string::npos) break;
-    at = comma + 1;
-  }
-  return counts.size() == 1 ? PathBudget(counts[0]) : PathBudget(std::move(counts));
-}
-
-std::string PathBudget::label() const {
-  if (per_channel.empty()) return std::to_string(spp);
-  std::string out;
-  for (int n : per_channel) out += (out.empty() ? "" : ",") + std::to_string(n);
-  return out;
-}
-
-std::vector<int> PathBudget::lane_paths(size_t channels) const {
-  const size_t lanes = kReplicates * channels;
-  std::vector<int> out(lanes);
-  if (per_channel.empty()) {
-    if (spp < int(lanes)) {
-      throw InputError(fmt::format("{} samples per pixel: at least {} are needed (one per "
-                                   "channel in each of {} replicates)",
-                                   spp, lanes, kReplicates));
-    }
-    // Path s of the pixel belongs to lane s % lanes.
-    for (size_t lane = 0; lane < lanes; ++lane) {
-      out[lane] = int((size_t(spp) - lane + lanes - 1) / lanes);
-    }
-    return out;
-  }
-  if (per_channel.size() != channels) {
-    throw InputError(fmt::format("{} path counts for {} channels: give one per channel",
-                                 per_channel.size(), channels));
-  }
-  for (size_t c = 0; c < channels; ++c) {
-    if (per_channel[c] < kReplicates) {
-      throw InputError(fmt::format("{} paths in channel {}: at least {} are needed (one in each "
-                                   "replicate)",
-                                   per_channel[c], c, kReplicates));
-    }
-    for (size_t r = 0; r < size_t(kReplicates); ++r) {
-      out[r * channels + c] = int((size_t(per_channel[c]) - r + kReplicates - 1) / kReplicates);
-    }
-  }
-  return out;
-}
-
 RadianceEstimate estimate_radiance(const ColumnTable& columns, size_t channel,
                                    const glm::dvec3& origin, const glm::dvec3& dir,
                                    const glm::dvec3& sun_dir, const TraceOptions& options,
@@ -396,145 +329,6 @@ RadianceEstimate estimate_radiance(const ColumnTable& columns, size_t channel,
   e.mean = mean;
   e.std_error = paths > 1 ? std::sqrt(m2 / (paths - 1) / paths) : 0.0;
   return e;
-}
-
-int64_t RenderSums::traced() const {
-  int64_t n = 0;
-  for (int d : done) n += d;
-  return n;
-}
-
-bool RenderSums::fits(const std::vector<int>& lane_paths) const {
-  if (done.size() != lane_paths.size()) return false;
-  for (size_t lane = 0; lane < done.size(); ++lane) {
-    if (done[lane] < 0 || done[lane] > lane_paths[lane]) return false;
-  }
-  return true;
-}
-
-namespace {
-
-// Where a render starts: from nothing, or from the sums it was given,
-// which must be of the same size and have no more paths in any lane.
-RenderSums initial_sums(const ReferenceSettings& settings, const ReferenceView& view,
-                        const std::vector<int>& lane_paths) {
-  const size_t lanes = lane_paths.size();
-  const size_t pixels = size_t(view.width) * size_t(view.height);
-  if (!settings.start) {
-    RenderSums sums;
-    sums.width = view.width;
-    sums.height = view.height;
-    sums.done.assign(lanes, 0);
-    sums.sum.assign(pixels * lanes, 0.0);
-    return sums;
-  }
-  const RenderSums& sums = *settings.start;
-  if (sums.width != view.width || sums.height != view.height ||
-      sums.sum.size() != pixels * lanes || !sums.fits(lane_paths)) {
-    throw InputError(fmt::format("the sums to start from are of a {}x{} render with {} lanes, "
-                                 "or have more paths in a lane than {} spp give it",
-                                 sums.width, sums.height, sums.done.size(),
-                                 settings.paths.label()));
-  }
-  return sums;
-}
-
-}  // namespace
-
-ReferenceImage render_reference(const Medium& m, const ReferenceView& view,
-                                const ReferenceSettings& settings) {
-  const size_t channels = m.channels.size();
-  const size_t lanes = kReplicates * channels;
-  const std::vector<int> lane_paths = settings.paths.lane_paths(channels);
-  auto start = std::chrono::steady_clock::now();
-  ReferenceImage image;
-  image.width = view.width;
-  image.height = view.height;
-  image.rgb.assign(size_t(view.width) * size_t(view.height) * 3, 0.0f);
-  image.noise.assign(image.rgb.size(), 0.0f);
-  glm::dvec3 camera = view.camera_atmo;
-  // A camera a hair below the bottom sphere is lifted onto it, as the GPU
-  // frame does (atmosphere/gpu/raymarch/raymarch_sky.frag).
-  double r_min = m.bottom_radius + 1.0;
-  if (glm::length(camera) < r_min) camera *= r_min / glm::length(camera);
-  glm::dvec3 sun = glm::normalize(view.sun_dir_atmo);
-  const ColumnTable columns(m);
-  std::vector<DepthTable> tables;
-  for (const MediumChannel& c : m.channels) tables.emplace_back(columns, c);
-
-  const size_t pixels = size_t(view.width) * size_t(view.height);
-  RenderSums sums = initial_sums(settings, view, lane_paths);
-  uint64_t total_paths = 0;
-  for (int n : lane_paths) total_paths += uint64_t(n);
-  const uint64_t traced_before = uint64_t(sums.traced());
-  uint64_t traced = traced_before;
-  const int chunk = std::max(settings.chunk_paths, 1);
-  int threads = settings.threads > 0 ? settings.threads
-                                     : std::max(1, int(std::thread::hardware_concurrency()));
-  // Chunk by chunk: up to `chunk` more paths in every lane of every pixel,
-  // then a checkpoint.
-  while (traced < total_paths) {
-    std::vector<int> until(lanes);
-    uint64_t chunk_total = 0;
-    for (size_t lane = 0; lane < lanes; ++lane) {
-      until[lane] = int(std::min<int64_t>(int64_t(sums.done[lane]) + chunk, lane_paths[lane]));
-      chunk_total += uint64_t(until[lane] - sums.done[lane]);
-    }
-    std::atomic<int> next_row{0}, rows_done{0};
-    auto work = [&] {
-      for (int y = next_row++; y < view.height; y = next_row++) {
-        for (int x = 0; x < view.width; ++x) {
-          uint64_t pixel = uint64_t(y) * uint64_t(view.width) + uint64_t(x);
-          glm::dvec3 dir = view.ray_dir(x, y);
-          // Lane by lane, which keeps one channel's table in the cache.
-          // One lane per (replicate, channel): its own stratified sequence.
-          for (size_t lane = 0; lane < lanes; ++lane) {
-            const DepthTable& table = tables[lane % channels];
-            uint64_t seed =
-                reference::mix64(settings.seed ^ reference::mix64(pixel * lanes + lane));
-            double& sum = sums.sum[pixel * lanes + lane];
-            for (int i = sums.done[lane]; i < until[lane]; ++i) {
-              reference::PathSampler sampler(seed, uint32_t(i));
-              sum += trace_path(table, camera, dir, sun, settings.trace, sampler);
-            }
-          }
-        }
-        ++rows_done;
-      }
-    };
-    std::vector<std::thread> pool;
-    for (int i = 0; i < threads; ++i) pool.emplace_back(work);
-    if (settings.progress) {
-      while (rows_done.load() < view.height) {
-        settings.progress((double(traced) + double(chunk_total) * rows_done.load() / view.height) /
-                          double(total_paths));
-        std::this_thread::sleep_for(std::chrono::milliseconds(250));
-      }
-    }
-    for (auto& t : pool) t.join();
-    sums.done = until;
-    traced += chunk_total;
-    if (settings.checkpoint) settings.checkpoint(sums);
-  }
-  if (settings.progress) settings.progress(1.0);
-
-  for (size_t pixel = 0; pixel < pixels; ++pixel) {
-    std::array<glm::dvec3, kReplicates> replicate{};
-    for (size_t lane = 0; lane < lanes; ++lane) {
-      replicate[lane / channels] += sums.sum[pixel * lanes + lane] / lane_paths[lane] *
-                                    m.channels[lane % channels].rgb_weight;
-    }
-    static_assert(kReplicates == 2, "the mean and spread below are of two replicates");
-    glm::dvec3 mean = 0.5 * (replicate[0] + replicate[1]);
-    glm::dvec3 spread = 0.5 * glm::abs(replicate[0] - replicate[1]);
-    for (int c = 0; c < 3; ++c) {
-      image.rgb[3 * pixel + size_t(c)] = float(mean[c]);
-      image.noise[3 * pixel + size_t(c)] = float(spread[c]);
-    }
-  }
-  image.paths = pixels * (total_paths - traced_before);
-  image.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  return image;
 }
 
 }  // namespace planet

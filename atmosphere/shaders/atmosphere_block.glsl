@@ -1,12 +1,22 @@
-// The atmosphere's parameters as a std140 uniform block, mirrored by
-// atmosphere/gpu/atmosphere_block.h (whose static_asserts pin the layout),
-// and unpacked into the shared Atmosphere struct.
+// The shared math in GLSL (Real = float; atmosphere/math/shared_math.h
+// compiles the same files in double), and the atmosphere's parameters as a
+// std140 uniform block, mirrored by atmosphere/gpu/atmosphere_block.h (whose
+// static_asserts pin the layout) and unpacked into the shared Atmosphere
+// struct.
 #define Real float
 #define Real3 vec3
 #define Real2 vec2
 #define IN(T) in T
 #define OUT(T) out T
-#include "atmosphere/shaders/atmosphere_functions.glsl"
+#define INOUT(T) inout T
+#include "atmosphere/shaders/definitions.glsl"
+#include "atmosphere/shaders/lut_sizes.glsl"
+#include "atmosphere/shaders/geometry.glsl"
+#include "atmosphere/shaders/density.glsl"
+#include "atmosphere/shaders/phase.glsl"
+#include "atmosphere/shaders/lut_coordinates.glsl"
+#include "atmosphere/shaders/transmittance.glsl"
+#include "atmosphere/shaders/sun.glsl"
 
 layout(std140, binding = 0) uniform AtmosphereBlock {
   vec4 u_radii;  // bottom, top, mie g, sun angular radius

@@ -1,12 +1,12 @@
 // Hillaire 2020, "A Scalable and Production Ready Sky and Atmosphere
 // Rendering Technique": the LUT mappings and the scattering integrals, in
-// the common subset of GLSL and C++-with-GLM (see atmosphere_functions.glsl,
-// which must be included first). The shaders of atmosphere/gpu/hillaire and
-// the CPU tests (atmosphere/hillaire_math.h) compile this same file.
+// the common subset of GLSL and C++-with-GLM (see definitions.glsl). The
+// shaders of atmosphere/gpu/hillaire (hillaire_common.glsl) and its CPU
+// side (atmosphere/math/hillaire_math.cpp) compile this same file, after
+// the shared math, hillaire_definitions.glsl, sunlight.glsl and ground.glsl.
 //
-// The including side declares, before including this file (and defines
-// anywhere):
-//   INOUT(T)                                    in-out parameters
+// The including side declares, before including this file and those two
+// (and defines anywhere):
 //   Real3 transmittance_lookup(IN(Atmosphere), Real r, Real mu)
 //       transmittance from radius r to the top along zenith cosine mu
 //   Real3 multiple_scattering_lookup(Real u, Real v, int part)
@@ -26,82 +26,6 @@
 // On the GPU these sample the LUTs; on the CPU they integrate directly or
 // read tables.
 
-const int kTransmittanceLutWidth = 256;
-const int kTransmittanceLutHeight = 64;
-const int kTransmittanceSteps = 40;
-// The multiple-scattering LUT: sun zenith (u) by altitude (v). Twilight
-// needs texels along mu_s, where the planet's shadow has a sharp edge: 5
-// deg after sunset the ground's sky light came out 6-12 % too high with 64
-// and within 3 % with 128 (the sky: 6.6 and 4.7 % worst channel).
-const int kMultipleScatteringLutWidth = 128;
-const int kMultipleScatteringLutHeight = 32;
-// The parts of a multiple-scattering or order table, side by side along u:
-// the field's spherical-harmonic coefficients up to degree kFieldDegree
-// that the symmetry about the sun's vertical plane leaves (see
-// FieldMoments), (L + 1)(L + 2) / 2 of them. Part 0 is the mean radiance.
-// At Mars sunset the sun's glow crosses the dust near the ground sideways;
-// to degree 2, the second order's irradiance on the ground came out
-// 18-25 % above the path tracer's, to degree 4 within 3-9 %, to 6 and 8
-// within 2-8 % (8 x 8 or 16 x 16 directions alike). But in the image,
-// degree 6 with 8 azimuths a row made Mars sunset worse (19.0 / 12.9 /
-// 6.8 % against 7.1 / 6.6 / 4.8 %): the gather cannot resolve it.
-// field_basis is written out to degree 4.
-const int kFieldDegree = 4;
-const int kFieldParts = (kFieldDegree + 1) * (kFieldDegree + 2) / 2;
-const int kFieldMean = 0;
-// Orders of scattering summed explicitly before the geometric tail. The
-// ratio of successive orders still falls after the fourth in thick dust
-// (Mars sunset, red: 0.78, 0.66, 0.62, 0.61 from the fourth to the
-// eighth), and a tail from 4 orders made the red sky 2x too bright beyond
-// them; from 6 orders the tail is within 3 % of orders 7 and up.
-const int kScatteringOrders = 6;
-// 8 x 8 stratified directions over the sphere (Hillaire 2020, sec. 5.5: 64).
-const int kMultipleScatteringDirectionsSqrt = 8;
-// Segments per gathered ray: from 20 to 12 no canonical sky moved by more
-// than 0.15 % (worst-channel relative RMSE), at 0.67 of the cost.
-const int kMultipleScatteringSteps = 12;
-// The forward-gain LUT: nu (u) by Mie scattering optical depth (v), and
-// the Legendre terms it sums (g_64 of g = 0.8 is 6e-7).
-const int kForwardGainLutWidth = 256;
-const int kForwardGainLutHeight = 64;
-const int kForwardGainTerms = 64;
-const int kSkyViewLutWidth = 200;
-const int kSkyViewLutHeight = 100;
-const int kAerialPerspectiveSize = 32;
-
-// --- Texel-centred coordinates ----------------------------------------------
-// Bruneton 2017's unit range <-> texture coordinate (atmosphere_functions.glsl)
-// at the integer sizes of these LUTs.
-Real lut_coord_from_unit(Real x, int texture_size) {
-  return texture_coord_from_unit_range(x, Real(texture_size));
-}
-
-Real unit_from_lut_coord(Real u, int texture_size) {
-  return unit_range_from_texture_coord(u, Real(texture_size));
-}
-
-// --- Transmittance LUT (Bruneton 2017, sec. 4.1) -----------------------------
-// Bruneton's mapping (atmosphere_functions.glsl), held to the texel-centre
-// range: a ray below the horizon or a point under the ground reads the
-// LUT's edge, where the planet's shadow test takes over anyway.
-void transmittance_lut_uv_from_r_mu(IN(Atmosphere) atmosphere, Real r, Real mu, OUT(Real) u,
-                                    OUT(Real) v) {
-  Real2 uv = transmittance_uv_from_r_mu(
-      atmosphere, r, mu, Real2(Real(kTransmittanceLutWidth), Real(kTransmittanceLutHeight)));
-  u = clamp(uv.x, lut_coord_from_unit(Real(0.0), kTransmittanceLutWidth),
-            lut_coord_from_unit(Real(1.0), kTransmittanceLutWidth));
-  v = clamp(uv.y, lut_coord_from_unit(Real(0.0), kTransmittanceLutHeight),
-            lut_coord_from_unit(Real(1.0), kTransmittanceLutHeight));
-}
-
-void transmittance_lut_r_mu_from_uv(IN(Atmosphere) atmosphere, Real u, Real v, OUT(Real) r,
-                                    OUT(Real) mu) {
-  Real2 r_mu = transmittance_r_mu_from_uv(
-      atmosphere, Real2(u, v), Real2(Real(kTransmittanceLutWidth), Real(kTransmittanceLutHeight)));
-  r = r_mu.x;
-  mu = r_mu.y;
-}
-
 // --- Multiple-scattering LUT (Hillaire 2020, sec. 5.5) ------------------------
 // Psi_ms depends on altitude and sun zenith only: y = altitude / thickness
 // and x = sky_irradiance_u_from_mu_s(mu_s), both texel-centred. The paper
@@ -111,21 +35,21 @@ void transmittance_lut_r_mu_from_uv(IN(Atmosphere) atmosphere, Real u, Real v, O
 void multiple_scattering_lut_uv_from_r_mu_s(IN(Atmosphere) atmosphere, Real r, Real mu_s,
                                             OUT(Real) u, OUT(Real) v) {
   Real x_r = (r - atmosphere.bottom_radius) / (atmosphere.top_radius - atmosphere.bottom_radius);
-  u = lut_coord_from_unit(sky_irradiance_u_from_mu_s(mu_s), kMultipleScatteringLutWidth);
-  v = lut_coord_from_unit(clamp(x_r, Real(0.0), Real(1.0)), kMultipleScatteringLutHeight);
+  u = texture_coord_from_unit_range(sky_irradiance_u_from_mu_s(mu_s), Real(kMultipleScatteringLutWidth));
+  v = texture_coord_from_unit_range(clamp(x_r, Real(0.0), Real(1.0)), Real(kMultipleScatteringLutHeight));
 }
 
 void multiple_scattering_lut_r_mu_s_from_uv(IN(Atmosphere) atmosphere, Real u, Real v,
                                             OUT(Real) r, OUT(Real) mu_s) {
-  Real x_mu_s = clamp(unit_from_lut_coord(u, kMultipleScatteringLutWidth), Real(0.0), Real(1.0));
-  Real x_r = clamp(unit_from_lut_coord(v, kMultipleScatteringLutHeight), Real(0.0), Real(1.0));
+  Real x_mu_s = clamp(unit_range_from_texture_coord(u, Real(kMultipleScatteringLutWidth)), Real(0.0), Real(1.0));
+  Real x_r = clamp(unit_range_from_texture_coord(v, Real(kMultipleScatteringLutHeight)), Real(0.0), Real(1.0));
   mu_s = mu_s_from_sky_irradiance_u(x_mu_s);
   r = atmosphere.bottom_radius + x_r * (atmosphere.top_radius - atmosphere.bottom_radius);
 }
 
 // The ground-irradiance table: one row over mu_s, the same mapping.
 Real ground_irradiance_lut_u_from_mu_s(Real mu_s) {
-  return lut_coord_from_unit(sky_irradiance_u_from_mu_s(mu_s), kMultipleScatteringLutWidth);
+  return texture_coord_from_unit_range(sky_irradiance_u_from_mu_s(mu_s), Real(kMultipleScatteringLutWidth));
 }
 
 // --- Sky-view LUT (Hillaire 2020, sec. 5.3, extended to the full azimuth) ----
@@ -188,50 +112,6 @@ Real3 one_minus_exp_over_x3(IN(Real3) x) {
   return Real3(one_minus_exp_over_x(x.x), one_minus_exp_over_x(x.y), one_minus_exp_over_x(x.z));
 }
 
-// Sun light arriving at radius r: transmittance to the top, or nothing when
-// the planet stands between the point and the sun (its shadow, sec. 5.2).
-Real3 sun_visibility(IN(Atmosphere) atmosphere, Real r, Real mu_s) {
-  return ray_intersects_ground(atmosphere, r, mu_s) ? Real3(0.0)
-                                                    : transmittance_lookup(atmosphere, r, mu_s);
-}
-
-// What lights the air along a ray:
-// - kSourceSky: the sun with the true phase functions and the glow's
-//   forward gain, plus every higher order from the multiple-scattering LUT
-//   (Hillaire 2020, eq. 11);
-// - kSourceFirstOrder: the sun with the true phase functions alone
-//   (gather_order splits it into the two kinds below);
-// - kSourceIsotropicSun: the sun with the isotropic phase (the paper's
-//   L_2 pass, sec. 5.5);
-// - kSourceNextOrder: the previous order's light (scattering_order_lookup)
-//   scattered once more; the ground reflects E_n.
-const int kSourceSky = 0;
-const int kSourceFirstOrder = 1;
-const int kSourceIsotropicSun = 2;
-const int kSourceNextOrder = 3;
-// The first order in two parts, which gather_order sums (see there):
-// - kSourceSunRayleigh: the sun scattered by Rayleigh alone, and the lit
-//   ground;
-// - kSourceSunMie: the sun scattered by Mie with a phase of 1 (the phase
-//   is carried by the directions' distribution), without the ground.
-const int kSourceSunRayleigh = 4;
-const int kSourceSunMie = 5;
-
-// The light of an order (or of all higher orders) arriving at a point, as
-// its spherical-harmonic coefficients over the sphere of directions w
-// looked along, in the local frame of the zenith (z), the sun's horizontal
-// direction (x) and the direction across it (y). The field is symmetric
-// about the sun's vertical plane (y -> -y), which leaves the terms
-// cos(m phi) of each degree l: part l (l + 1) / 2 + m for 0 <= m <= l.
-// The basis is orthonormal in the mean over the sphere, with B_00 = 1, and
-// the sum over m of B_lm(w) B_lm(d) is (2l + 1) times the mean of P_l(w.d)
-// over w and its mirror image (the addition theorem, less the sin(m phi)
-// terms, which cancel over an even field). Part (l, m) holds the mean over
-// the sphere of L B_lm; part 0 is the mean radiance.
-struct FieldMoments {
-  Real3 part[kFieldParts];
-};
-
 // B_lm(d) for part k = (l, m), d = (x, y, z) in the local frame:
 //   sqrt((2l + 1)(l - m)! / (l + m)!) (times sqrt 2 for m > 0) Q_lm(z) R_m,
 // with Q_lm the associated Legendre function over sin^m(theta) (Q_mm =
@@ -267,38 +147,6 @@ Real3 field_part(IN(FieldMoments) f, int part) { return f.part[part]; }
 Real3 field_lookup(bool previous_order, Real u, Real v, int part) {
   return previous_order ? scattering_order_lookup(u, v, part)
                         : multiple_scattering_lookup(u, v, part);
-}
-
-// The Legendre coefficient g_l of Cornette-Shanks (p = sum over l of
-// (2l + 1) / (4 pi) g_l P_l). Cornette-Shanks is Henyey-Greenstein, whose
-// coefficients are g^l, times 3 (1 + nu^2) / (2 (2 + g^2)), with
-// 1 + nu^2 = 4/3 + (2/3) P_2 and
-//   P_2 P_l = a P_(l+2) + b P_l + c P_(l-2),
-//   a = 3 (l+1)(l+2) / (2 (2l+1)(2l+3)), b = l (l+1) / ((2l-1)(2l+3)),
-//   c = 3 l (l-1) / (2 (2l-1)(2l+1)),
-// so that the term l of P_2 times Henyey-Greenstein is
-// a g^(l+2) + b g^l + c g^(l-2). g_0 = 1; g_1 = 3 g (4 + g^2) / (5 (2 + g^2)).
-// cornette_shanks_term gives g_l for l >= 2 from g^(l-2), formed by
-// products (g may be zero or negative), so that a series can carry it.
-Real cornette_shanks_term(Real g, int l, Real g_l_minus_2) {
-  Real x = Real(l);
-  Real a = Real(3.0) * (x + Real(1.0)) * (x + Real(2.0)) /
-           (Real(2.0) * (Real(2.0) * x + Real(1.0)) * (Real(2.0) * x + Real(3.0)));
-  Real b = x * (x + Real(1.0)) / ((Real(2.0) * x - Real(1.0)) * (Real(2.0) * x + Real(3.0)));
-  Real c = Real(3.0) * x * (x - Real(1.0)) /
-           (Real(2.0) * (Real(2.0) * x - Real(1.0)) * (Real(2.0) * x + Real(1.0)));
-  Real g_l = g_l_minus_2 * g * g;
-  return Real(1.5) / (Real(2.0) + g * g) *
-         (Real(4.0) / Real(3.0) * g_l +
-          Real(2.0) / Real(3.0) * (a * g_l * g * g + b * g_l + c * g_l_minus_2));
-}
-
-Real cornette_shanks_legendre(Real g, int l) {
-  if (l == 0) return Real(1.0);
-  if (l == 1) return Real(3.0) * g * (Real(4.0) + g * g) / (Real(5.0) * (Real(2.0) + g * g));
-  Real g_l_minus_2 = Real(1.0);
-  for (int i = 2; i < l; ++i) g_l_minus_2 *= g;
-  return cornette_shanks_term(g, l, g_l_minus_2);
 }
 
 // --- The sun's glow past the table's degree ------------------------------------
@@ -372,15 +220,15 @@ Real mie_column_to_top(IN(Atmosphere) atmosphere, Real r, Real mu, int steps) {
 // which keeps texels where the peak is; v = tau / (tau + 2), which covers
 // every depth, fine where the gain grows fastest. Both texel-centred.
 void forward_gain_lut_uv_from_nu_tau(Real nu, Real tau, OUT(Real) u, OUT(Real) v) {
-  u = lut_coord_from_unit(safe_sqrt(Real(0.5) * (Real(1.0) - nu)), kForwardGainLutWidth);
+  u = texture_coord_from_unit_range(safe_sqrt(Real(0.5) * (Real(1.0) - nu)), Real(kForwardGainLutWidth));
   Real t = max(tau, Real(0.0));
-  v = lut_coord_from_unit(t / (t + Real(2.0)), kForwardGainLutHeight);
+  v = texture_coord_from_unit_range(t / (t + Real(2.0)), Real(kForwardGainLutHeight));
 }
 
 void forward_gain_lut_nu_tau_from_uv(Real u, Real v, OUT(Real) nu, OUT(Real) tau) {
-  Real s = unit_from_lut_coord(u, kForwardGainLutWidth);
+  Real s = unit_range_from_texture_coord(u, Real(kForwardGainLutWidth));
   nu = Real(1.0) - Real(2.0) * s * s;
-  Real w = min(unit_from_lut_coord(v, kForwardGainLutHeight), Real(1.0) - Real(1e-6));
+  Real w = min(unit_range_from_texture_coord(v, Real(kForwardGainLutHeight)), Real(1.0) - Real(1e-6));
   tau = Real(2.0) * w / (Real(1.0) - w);
 }
 
@@ -485,17 +333,6 @@ void accumulate_segment(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, Rea
   luminance += weight * source;
   f_ms += weight * sigma_s;
   throughput *= exp(-extinction * ds);
-}
-
-// Lambertian ground at the end of a ray, lit by the sun through the
-// atmosphere (the sky's own light on the ground is left out, as in the
-// reference implementation of Hillaire 2020).
-Real3 ground_radiance(IN(Atmosphere) atmosphere, IN(Real3) p, IN(Real3) sun_dir) {
-  Real r = length(p);
-  Real mu_s = clamp_cosine(dot(p, sun_dir) / r);
-  Real3 sun = mu_s > Real(0.0) ? transmittance_lookup(atmosphere, atmosphere.bottom_radius, mu_s)
-                               : Real3(0.0);
-  return atmosphere.ground_albedo / kPi * sun * max(mu_s, Real(0.0));
 }
 
 // Scattered luminance (per unit solar irradiance), transmittance and f_ms
@@ -782,22 +619,4 @@ Real3 with_geometric_tail(IN(Real3) j_before_last, IN(Real3) j_last, IN(Real3) x
                           IN(Real3) x_last) {
   Real3 q = clamp(j_last / max(j_before_last, Real3(1e-30)), Real3(0.0), Real3(0.9));
   return x_sum + x_last * q / (Real3(1.0) - q);
-}
-
-// --- The sun disk ---------------------------------------------------------------
-// Limb darkening by the power law I(mu) = I(1) mu^alpha of Hestroffer and
-// Magnan 1998, alpha = 0.397, 0.503, 0.652 at 680, 550, 440 nm, with mu the
-// cosine on the solar surface (sqrt(1 - x^2), x the fraction of the disk's
-// radius). Normalised so that the disk's irradiance is the body's solar
-// irradiance: int mu^alpha over the disk = (solid angle) 2 / (alpha + 2).
-Real3 sun_disk_radiance(IN(Atmosphere) atmosphere, Real cos_angle) {
-  Real cos_alpha = cos(atmosphere.sun_angular_radius);
-  if (cos_angle <= cos_alpha) return Real3(0.0);
-  Real solid_angle = Real(2.0) * kPi * (Real(1.0) - cos_alpha);
-  Real angle = acos(clamp_cosine(cos_angle));
-  Real x = min(angle / atmosphere.sun_angular_radius, Real(1.0));
-  Real mu = safe_sqrt(Real(1.0) - x * x);
-  Real3 alpha = Real3(0.397, 0.503, 0.652);
-  Real3 darkening = Real3(pow(mu, alpha.x), pow(mu, alpha.y), pow(mu, alpha.z));
-  return atmosphere.solar_irradiance / solid_angle * (alpha + Real3(2.0)) * Real(0.5) * darkening;
 }

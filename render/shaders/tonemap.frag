@@ -1,17 +1,13 @@
-// Exposure, then Narkowicz's 2015 fit of the ACES filmic curve, then the
-// sRGB transfer function into an 8-bit target.
+// Exposure, then the tone map (Narkowicz's 2015 fit of the ACES filmic
+// curve and the sRGB transfer function) into an 8-bit target.
+#define Real float
+#define Real3 vec3
+#include "core/shaders/tone_map.glsl"
+
 in vec2 v_ndc;
 layout(location = 0) out vec4 o_color;
 layout(binding = 0) uniform sampler2D u_hdr;
 uniform float u_exposure;
-
-vec3 aces_fit(vec3 x) {
-  return clamp((x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
-}
-
-vec3 srgb_encode(vec3 c) {
-  return mix(12.92 * c, 1.055 * pow(c, vec3(1.0 / 2.4)) - 0.055, step(0.0031308, c));
-}
 
 // Jimenez 2014, interleaved gradient noise: a fixed per-pixel pattern in
 // [0, 1), so that dithered frames stay identical run to run.
@@ -21,7 +17,7 @@ float dither_noise(vec2 pixel) {
 
 void main() {
   vec3 hdr = texelFetch(u_hdr, ivec2(gl_FragCoord.xy), 0).rgb;
-  vec3 color = srgb_encode(aces_fit(hdr * u_exposure));
+  vec3 color = tone_map(hdr * u_exposure);
   // Half a step of the 8-bit target either way, after tone mapping: smooth
   // skies quantise into noise finer than the eye, not into bands.
   color += (dither_noise(gl_FragCoord.xy) - 0.5) / 255.0;

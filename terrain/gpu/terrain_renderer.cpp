@@ -1,7 +1,7 @@
 #include "terrain/gpu/terrain_renderer.h"
 
-#include "render/gl/context.h"
-#include "sim/error.h"
+#include "core/error.h"
+#include "gl/context.h"
 
 #include <fmt/format.h>
 #include <glm/gtc/type_ptr.hpp>
@@ -12,21 +12,6 @@ namespace planet {
 
 // terrain.vert's u_sky_irradiance.
 constexpr GLuint kSkyIrradianceUnit = 15;
-
-namespace {
-
-glm::mat4 clip_from_view(double vertical_fov, double aspect, double near) {
-  // Reversed Z, infinite far plane: depth = near / view depth.
-  double f = 1.0 / std::tan(0.5 * vertical_fov);
-  glm::mat4 m(0.0f);
-  m[0][0] = float(f / aspect);
-  m[1][1] = float(f);
-  m[3][2] = float(near);
-  m[2][3] = -1.0f;
-  return m;
-}
-
-}  // namespace
 
 LodView TerrainRenderer::lod_view(const Camera& camera, int width, int height,
                                   double pixel_budget) {
@@ -73,20 +58,21 @@ void TerrainRenderer::wait_until_complete(const Camera& camera, int width, int h
   auto start = std::chrono::steady_clock::now();
   // Each round makes the next level resident where the view wants it.
   while (true) {
-    LodSelection sel = selector_.select(view, [&](const TileKey& k, ResidentTile& t) { return cache_->lookup(k, t); });
+    LodSelection sel = selector_.select(
+        view, [&](const TileKey& k, ResidentTile& t) { return cache_->lookup(k, t); });
     if (sel.wanted.empty()) return;
     cache_->request(sel.wanted);
-    double left = timeout_s -
-                  std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    double left =
+        timeout_s - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::vector<TileKey> missing = cache_->wait_for(sel.wanted, std::max(left, 0.0));
     if (!missing.empty()) {
       std::string names;
       for (size_t i = 0; i < std::min<size_t>(missing.size(), 5); ++i) {
         names += (i ? ", " : "") + missing[i].name();
       }
-      throw SystemError(fmt::format(
-          "terrain: {} tiles (face/level/x/y) still missing after {:.0f} s: {}{}", missing.size(),
-          timeout_s, names, missing.size() > 5 ? ", ..." : ""));
+      throw SystemError(
+          fmt::format("terrain: {} tiles (face/level/x/y) still missing after {:.0f} s: {}{}",
+                      missing.size(), timeout_s, names, missing.size() > 5 ? ", ..." : ""));
     }
   }
 }
@@ -95,15 +81,16 @@ TerrainStats TerrainRenderer::draw(const Camera& camera, int width, int height,
                                    const TerrainLighting& lighting) {
   ++frame_;
   LodView view = lod_view(camera, width, height, options_.pixel_budget);
-  LodSelection sel =
-      selector_.select(view, [&](const TileKey& k, ResidentTile& t) { return cache_->lookup(k, t); });
+  LodSelection sel = selector_.select(
+      view, [&](const TileKey& k, ResidentTile& t) { return cache_->lookup(k, t); });
   cache_->request(sel.wanted);
 
   TerrainStats stats;
   stats.tiles_wanted = int(sel.wanted.size());
 
   program_.use();
-  glm::mat4 clip = clip_from_view(camera.vertical_fov, double(width) / height, camera.near);
+  glm::mat4 clip =
+      clip_from_view_reversed_z(camera.vertical_fov, double(width) / height, camera.near);
   glUniformMatrix3fv(program_.uniform("u_view_from_body"), 1, GL_FALSE,
                      glm::value_ptr(glm::mat3(view.view_from_body)));
   glUniformMatrix4fv(program_.uniform("u_clip_from_view"), 1, GL_FALSE, glm::value_ptr(clip));
@@ -112,8 +99,7 @@ TerrainStats TerrainRenderer::draw(const Camera& camera, int width, int height,
   glUniform1i(program_.uniform("u_has_atmosphere"), lighting.has_atmosphere ? 1 : 0);
   glUniform1i(program_.uniform("u_has_sky_irradiance"), lighting.sky_irradiance != 0 ? 1 : 0);
   if (lighting.sky_irradiance != 0) glBindTextureUnit(kSkyIrradianceUnit, lighting.sky_irradiance);
-  glUniform3fv(program_.uniform("u_sun_irradiance"), 1,
-               glm::value_ptr(lighting.solar_irradiance));
+  glUniform3fv(program_.uniform("u_sun_irradiance"), 1, glm::value_ptr(lighting.solar_irradiance));
   if (lighting.has_atmosphere) {
     glm::dvec3 scale = lighting.atmo_scale;
     glUniform3fv(program_.uniform("u_atmo_scale"), 1, glm::value_ptr(glm::vec3(scale)));

@@ -7,8 +7,8 @@
 #include "terrain/lod.h"
 #include "terrain/tile_cache.h"
 
-#include "render/gl/program.h"
-#include "render/gl/texture.h"
+#include "gl/program.h"
+#include "gl/texture.h"
 #include "sim/body.h"
 #include "sim/camera.h"
 

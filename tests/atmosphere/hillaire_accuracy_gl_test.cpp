@@ -3,19 +3,21 @@
 // rendered with `planet reference --width 32 --height 16 --spp N`), and
 // free of NaN and Inf on every canonical scene.
 #include "atmosphere/gpu/hillaire/hillaire_technique.h"
-#include "atmosphere/hillaire_math.h"
+#include "atmosphere/math/hillaire_math.h"
+#include "core/data_paths.h"
+#include "core/tone_map.h"
+#include "gl/context.h"
+#include "lab/accuracy.h"
+#include "lab/reference_cache.h"
+#include "lab/scene_render.h"
 #include "render/frame.h"
-#include "render/gl/context.h"
-#include "render/reference_cache.h"
-#include "render/technique_accuracy.h"
-#include "sim/data_paths.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 
 namespace planet {
@@ -49,7 +51,8 @@ const AccuracyCase kCases[] = {
     {"earth_400km", PathBudget({98304, 180224, 655360}), 0.016},
     {"earth_sunset", PathBudget({24576, 126976, 811008}), 0.025},
     {"earth_twilight", PathBudget({430080, 339968, 704512}), 0.035},
-    {"mars_noon", 196608, 0.032},      {"mars_sunset", PathBudget({184320, 143360, 131072}), 0.085},
+    {"mars_noon", 196608, 0.032},
+    {"mars_sunset", PathBudget({184320, 143360, 131072}), 0.085},
 };
 
 PathBudget reference_spp(const std::string& scene) {
@@ -90,12 +93,10 @@ TEST_P(HillaireAccuracyGLTest, MatchesTheGroundTruth) {
   ImageRGB reference = reference_image(scene, c.spp);
   ImageRGB technique = render_scene_with(scene, "hillaire");
   TechniqueAccuracy accuracy = measure_accuracy(scene, technique, reference);
-  std::printf("%s: relative RMSE %.2f%% %.2f%% %.2f%% (open sky %.2f%% %.2f%% %.2f%%)\n",
-              c.scene, 100 * accuracy.channels[0].relative(),
-              100 * accuracy.channels[1].relative(), 100 * accuracy.channels[2].relative(),
-              100 * accuracy.sky_channels[0].relative(),
-              100 * accuracy.sky_channels[1].relative(),
-              100 * accuracy.sky_channels[2].relative());
+  std::printf("%s: relative RMSE %.2f%% %.2f%% %.2f%% (open sky %.2f%% %.2f%% %.2f%%)\n", c.scene,
+              100 * accuracy.channels[0].relative(), 100 * accuracy.channels[1].relative(),
+              100 * accuracy.channels[2].relative(), 100 * accuracy.sky_channels[0].relative(),
+              100 * accuracy.sky_channels[1].relative(), 100 * accuracy.sky_channels[2].relative());
   for (float v : technique.pixels) ASSERT_TRUE(std::isfinite(v));
   if (accuracy.worst_relative() > c.max_relative_rmse) {
     std::filesystem::path dir = std::filesystem::absolute("hillaire_accuracy_failures");
@@ -104,8 +105,8 @@ TEST_P(HillaireAccuracyGLTest, MatchesTheGroundTruth) {
     write_tone_mapped_png(dir / (scene.name + "_reference.png"), reference, scene.exposure);
     write_exr(dir / (scene.name + "_technique.exr"), technique);
     write_exr(dir / (scene.name + "_reference.exr"), reference);
-    ADD_FAILURE() << c.scene << ": worst relative RMSE " << accuracy.worst_relative()
-                  << " above " << c.max_relative_rmse << "; images in " << dir;
+    ADD_FAILURE() << c.scene << ": worst relative RMSE " << accuracy.worst_relative() << " above "
+                  << c.max_relative_rmse << "; images in " << dir;
   }
 }
 
@@ -117,12 +118,12 @@ TEST_F(HillaireAccuracyGLTest, ScatteringOrdersBeatThePapersSeries) {
   for (const char* name : {"earth_noon", "earth_twilight", "mars_noon"}) {
     Scene scene = small_scene(name);
     ImageRGB reference = reference_image(scene, reference_spp(name));
-    double orders = measure_accuracy(scene, render_scene_with(scene, "hillaire"), reference)
-                        .worst_relative();
+    double orders =
+        measure_accuracy(scene, render_scene_with(scene, "hillaire"), reference).worst_relative();
     double paper = measure_accuracy(scene, render_scene_with(scene, "hillaire2020"), reference)
                        .worst_relative();
-    std::printf("%s: worst relative RMSE %.2f%% with the orders, %.2f%% with the paper's\n",
-                name, 100 * orders, 100 * paper);
+    std::printf("%s: worst relative RMSE %.2f%% with the orders, %.2f%% with the paper's\n", name,
+                100 * orders, 100 * paper);
     EXPECT_LT(orders, 0.8 * paper) << name;
   }
 }
@@ -151,13 +152,13 @@ TEST(HillaireCanonicalGLTest, NoNanOrInfInAnyCanonicalScene) {
       return std::all_of(v.begin(), v.end(), [](float x) { return std::isfinite(x); });
     };
     EXPECT_TRUE(finite(renderer.read_hdr())) << "image";
-    EXPECT_TRUE(finite(read_texture_rgba32f(technique->transmittance_lut(),
-                                            shared::kTransmittanceLutWidth,
-                                            shared::kTransmittanceLutHeight)));
-    EXPECT_TRUE(finite(read_texture_rgba32f(technique->multiple_scattering_lut(),
-                                            shared::kFieldParts *
-                                                shared::kMultipleScatteringLutWidth,
-                                            shared::kMultipleScatteringLutHeight)));
+    EXPECT_TRUE(
+        finite(read_texture_rgba32f(technique->transmittance_lut(), shared::kTransmittanceLutWidth,
+                                    shared::kTransmittanceLutHeight)));
+    EXPECT_TRUE(
+        finite(read_texture_rgba32f(technique->multiple_scattering_lut(),
+                                    hillaire::kFieldParts * shared::kMultipleScatteringLutWidth,
+                                    shared::kMultipleScatteringLutHeight)));
     if (technique->lut_weight() > 0.0) {
       EXPECT_TRUE(finite(read_texture_rgba32f(technique->sky_view_lut(), shared::kSkyViewLutWidth,
                                               shared::kSkyViewLutHeight)));

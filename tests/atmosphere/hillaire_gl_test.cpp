@@ -2,10 +2,10 @@
 // (atmosphere/hillaire_math.h), and its frames checked for what a person
 // must see: no NaN or Inf anywhere, no pop where its two paths meet.
 #include "atmosphere/gpu/hillaire/hillaire_technique.h"
-#include "atmosphere/hillaire_math.h"
+#include "atmosphere/math/hillaire_math.h"
+#include "core/data_paths.h"
+#include "gl/context.h"
 #include "render/frame.h"
-#include "render/gl/context.h"
-#include "sim/data_paths.h"
 #include "sim/geodesy.h"
 
 #include "tests/render/view_from_place.h"
@@ -14,8 +14,8 @@
 #include <glm/gtc/constants.hpp>
 
 #include <cmath>
-#include <cstdlib>
 #include <cstdio>
+#include <cstdlib>
 
 namespace planet {
 namespace {
@@ -33,7 +33,7 @@ class HillaireGLTest : public ::testing::Test {
     // These test the sky over a smooth Earth: without relief the camera
     // stays above ground wherever a test puts it.
     body_.terrain = nullptr;
-    model_ = parse_atmosphere(JsonObject(body_.atmosphere, body_.file.string(), "atmosphere"));
+    model_ = load_atmosphere(body_);
     atmosphere_ = shared::to_shared(model_);
   }
 
@@ -104,7 +104,7 @@ TEST_F(HillaireGLTest, TransmittanceLutMatchesCpuOpticalDepth) {
       }
       // Alpha: the Mie density's column (metres), the same sum. Mie's thin
       // layer makes it the more sensitive to mu's rounding at the horizon.
-      double column_cpu = shared::mie_column_to_top(atmosphere_, r, mu, 40);
+      double column_cpu = hillaire::mie_column_to_top(atmosphere_, r, mu, 40);
       double column_gpu = lut[(size_t(y) * w + size_t(x)) * 4 + 3];
       double column_allowed = 5e-4 * column_cpu + 1e-2;
       worst_column = std::max(worst_column, std::abs(column_gpu - column_cpu) / column_allowed);
@@ -125,8 +125,8 @@ TEST_F(HillaireGLTest, ForwardGainLutMatchesCpuSeries) {
   for (int y = 0; y < h; ++y) {
     for (int x = 0; x < w; ++x) {
       double nu, tau;
-      shared::forward_gain_lut_nu_tau_from_uv((x + 0.5) / w, (y + 0.5) / h, nu, tau);
-      double cpu = shared::forward_gain_times_extinction(model_.mie_g, nu, tau);
+      hillaire::forward_gain_lut_nu_tau_from_uv((x + 0.5) / w, (y + 0.5) / h, nu, tau);
+      double cpu = hillaire::forward_gain_times_extinction(model_.mie_g, nu, tau);
       double gpu = lut[(size_t(y) * w + size_t(x)) * 4];
       // 62 terms summed in float, the largest near the peak's 0.4 per sr:
       // a few 1e-7 per sr.
@@ -150,7 +150,7 @@ TEST_F(HillaireGLTest, PaperMultipleScatteringLutMatchesCpuIntegral) {
   render({glm::radians(46.5), glm::radians(8.0), 2.0}, 0.0, 10.0, 30.0, 180.0);
   const int w = shared::kMultipleScatteringLutWidth, h = shared::kMultipleScatteringLutHeight;
   // The mean's part; the moments' parts stay zero with the paper's LUT.
-  const int width = shared::kFieldParts * w;
+  const int width = hillaire::kFieldParts * w;
   auto lut = read_texture(technique->multiple_scattering_lut(), width, h);
   for (size_t i = 0; i < lut.size(); i += 4) {
     if (int(i / 4) % width >= w) {
@@ -163,9 +163,9 @@ TEST_F(HillaireGLTest, PaperMultipleScatteringLutMatchesCpuIntegral) {
   for (int y = 0; y < h; y += 3) {
     for (int x = 0; x < w; x += 3) {
       double r, mu_s;
-      shared::multiple_scattering_lut_r_mu_s_from_uv(atmosphere_, (x + 0.5) / w, (y + 0.5) / h,
-                                                     r, mu_s);
-      glm::dvec3 cpu = shared::multiple_scattering_texel(atmosphere_, r, mu_s);
+      hillaire::multiple_scattering_lut_r_mu_s_from_uv(atmosphere_, (x + 0.5) / w, (y + 0.5) / h, r,
+                                                       mu_s);
+      glm::dvec3 cpu = hillaire::multiple_scattering_texel(atmosphere_, r, mu_s);
       for (int c = 0; c < 3; ++c) {
         double gpu = lut[(size_t(y) * size_t(width) + size_t(x)) * 4 + size_t(c)];
         // The GPU reads the sun's transmittance from the bilinear LUT, the
@@ -193,9 +193,9 @@ TEST_F(HillaireGLTest, ScatteringOrdersMatchCpuIntegrals) {
   HillaireTechnique* technique = make_renderer();
   render({glm::radians(46.5), glm::radians(8.0), 2.0}, 0.0, 10.0, 30.0, 180.0);
   const int w = shared::kMultipleScatteringLutWidth, h = shared::kMultipleScatteringLutHeight;
-  const int width = shared::kFieldParts * w;
+  const int width = hillaire::kFieldParts * w;
   std::vector<std::vector<float>> orders;
-  for (int k = 1; k <= shared::kScatteringOrders; ++k) {
+  for (int k = 1; k <= hillaire::kScatteringOrders; ++k) {
     orders.push_back(read_texture(technique->scattering_order_lut(k), width, h + 1));
   }
   auto texel = [&](const std::vector<float>& table, int x, int y) {
@@ -215,29 +215,31 @@ TEST_F(HillaireGLTest, ScatteringOrdersMatchCpuIntegrals) {
           << what << " of order " << k << " at texel " << x << ", " << y << " channel " << c;
     }
   };
-  for (int k = 1; k <= shared::kScatteringOrders; ++k) {
-    const int source = k == 1 ? shared::kSourceFirstOrder : shared::kSourceNextOrder;
+  for (int k = 1; k <= hillaire::kScatteringOrders; ++k) {
+    const int source = k == 1 ? hillaire::kSourceFirstOrder : hillaire::kSourceNextOrder;
     const std::vector<float>& gpu = orders[size_t(k - 1)];
-    if (k > 1) shared::cpu_order_table = orders[size_t(k - 2)].data();
+    const float* previous = k > 1 ? orders[size_t(k - 2)].data() : nullptr;
     for (int x = 0; x < w; x += 9) {
       double r, mu_s;
-      shared::multiple_scattering_lut_r_mu_s_from_uv(atmosphere_, (x + 0.5) / w, 0.5 / h, r, mu_s);
-      glm::dvec3 e = shared::gather_order(atmosphere_, shared::ground_gather_radius(atmosphere_),
-                                          mu_s, source, true)
-                         .part[shared::kFieldMean];
+      hillaire::multiple_scattering_lut_r_mu_s_from_uv(atmosphere_, (x + 0.5) / w, 0.5 / h, r,
+                                                       mu_s);
+      glm::dvec3 e = hillaire::gather_order_from(previous, atmosphere_,
+                                                 hillaire::ground_gather_radius(atmosphere_), mu_s,
+                                                 source, true)
+                         .part[hillaire::kFieldMean];
       check(e, texel(gpu, x, h), e, "E", k, x, h);
       for (int y = 0; y < h; y += 5) {
-        shared::multiple_scattering_lut_r_mu_s_from_uv(atmosphere_, (x + 0.5) / w, (y + 0.5) / h,
-                                                       r, mu_s);
-        shared::FieldMoments f = shared::gather_order(atmosphere_, r, mu_s, source, false);
-        for (int part = 0; part < shared::kFieldParts; ++part) {
-          check(shared::field_part(f, part), texel(gpu, x + part * w, y),
-                f.part[shared::kFieldMean], "part", k, x, y);
+        hillaire::multiple_scattering_lut_r_mu_s_from_uv(atmosphere_, (x + 0.5) / w, (y + 0.5) / h,
+                                                         r, mu_s);
+        hillaire::FieldMoments f =
+            hillaire::gather_order_from(previous, atmosphere_, r, mu_s, source, false);
+        for (int part = 0; part < hillaire::kFieldParts; ++part) {
+          check(hillaire::field_part(f, part), texel(gpu, x + part * w, y),
+                f.part[hillaire::kFieldMean], "part", k, x, y);
         }
       }
     }
   }
-  shared::cpu_order_table = nullptr;
   std::printf("scattering orders: worst error %.3f of the allowed\n", worst);
   // The LUT is the sum with its tail, texel for texel.
   auto lut = read_texture(technique->multiple_scattering_lut(), width, h);
@@ -247,9 +249,9 @@ TEST_F(HillaireGLTest, ScatteringOrdersMatchCpuIntegrals) {
       glm::dvec3 all(0.0);
       for (const auto& order : orders) all += texel(order, x, y);
       const size_t last = orders.size() - 1;
-      glm::dvec3 sum = shared::with_geometric_tail(texel(orders[last - 1], mean_x, y),
-                                                   texel(orders[last], mean_x, y), all,
-                                                   texel(orders[last], x, y));
+      glm::dvec3 sum = hillaire::with_geometric_tail(texel(orders[last - 1], mean_x, y),
+                                                     texel(orders[last], mean_x, y), all,
+                                                     texel(orders[last], x, y));
       glm::dvec3 got = texel(lut, x, y);
       for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], sum[c], 1e-5 * std::abs(sum[c]) + 1e-12);
     }
@@ -280,24 +282,24 @@ TEST_F(HillaireGLTest, NoNanOrInfFromTheGroundToDeepSpaceAndInsideThePlanet) {
       SCOPED_TRACE(::testing::Message() << view.what << ", sun at " << sun_elevation << " deg");
       auto hdr = render(view.place, 0.0, view.pitch_deg, sun_elevation, 90.0);
       EXPECT_TRUE(all_finite(hdr)) << "image";
-      EXPECT_TRUE(all_finite(read_texture(technique->transmittance_lut(),
-                                          shared::kTransmittanceLutWidth,
-                                          shared::kTransmittanceLutHeight)))
+      EXPECT_TRUE(
+          all_finite(read_texture(technique->transmittance_lut(), shared::kTransmittanceLutWidth,
+                                  shared::kTransmittanceLutHeight)))
           << "transmittance LUT";
-      EXPECT_TRUE(all_finite(read_texture(
-          technique->multiple_scattering_lut(),
-          shared::kFieldParts * shared::kMultipleScatteringLutWidth,
-          shared::kMultipleScatteringLutHeight)))
+      EXPECT_TRUE(
+          all_finite(read_texture(technique->multiple_scattering_lut(),
+                                  hillaire::kFieldParts * shared::kMultipleScatteringLutWidth,
+                                  shared::kMultipleScatteringLutHeight)))
           << "multiple-scattering LUT";
-      for (int k = 1; k <= shared::kScatteringOrders; ++k) {
-        EXPECT_TRUE(all_finite(read_texture(
-            technique->scattering_order_lut(k),
-            shared::kFieldParts * shared::kMultipleScatteringLutWidth,
-            shared::kMultipleScatteringLutHeight + 1)))
+      for (int k = 1; k <= hillaire::kScatteringOrders; ++k) {
+        EXPECT_TRUE(
+            all_finite(read_texture(technique->scattering_order_lut(k),
+                                    hillaire::kFieldParts * shared::kMultipleScatteringLutWidth,
+                                    shared::kMultipleScatteringLutHeight + 1)))
             << "order " << k;
       }
-      EXPECT_TRUE(all_finite(read_texture(technique->ground_irradiance_lut(),
-                                          shared::kMultipleScatteringLutWidth, 1)))
+      EXPECT_TRUE(all_finite(
+          read_texture(technique->ground_irradiance_lut(), shared::kMultipleScatteringLutWidth, 1)))
           << "ground's sky irradiance";
       if (technique->lut_weight() > 0.0) {
         EXPECT_TRUE(all_finite(read_texture(technique->sky_view_lut(), shared::kSkyViewLutWidth,
@@ -326,8 +328,7 @@ TEST(HillaireLowlandsGLTest, NoDarkBandWhereTheTerrainLiesBelowTheBottomSphere) 
   setenv("PLANET_GL_DEBUG", "1", 1);
   auto context = GlContext::create_headless();
   Body body = load_body(data_dir() / "planets" / "mars.json");
-  AtmosphereModel model =
-      parse_atmosphere(JsonObject(body.atmosphere, body.file.string(), "atmosphere"));
+  AtmosphereModel model = load_atmosphere(body);
   const int width = 240, height = 135;
   FrameRenderer renderer(width, height);
   renderer.set_body(body, model, std::make_unique<HillaireTechnique>());
@@ -396,8 +397,7 @@ TEST_F(HillaireGLTest, SwitchToPerPixelMarchingDoesNotPop) {
   double worst_ratio = 0, worst_switch = 0, worst_alone = 0;
   for (int i = 1; i + 1 < kFrames; ++i) {
     double d_switch = second_difference(by_altitude, i);
-    double d_alone =
-        std::max(second_difference(luts, i), second_difference(per_pixel, i));
+    double d_alone = std::max(second_difference(luts, i), second_difference(per_pixel, i));
     worst_switch = std::max(worst_switch, d_switch);
     worst_alone = std::max(worst_alone, d_alone);
     worst_ratio = std::max(worst_ratio, d_switch / d_alone);
@@ -405,15 +405,15 @@ TEST_F(HillaireGLTest, SwitchToPerPixelMarchingDoesNotPop) {
     // may add a little, a pop adds its whole jump.
     EXPECT_LE(d_switch, 1.1 * d_alone) << "frame " << i << " at " << 40 + 2 * i << " km";
   }
-  std::printf("switch: worst second difference %.5f with the switch, %.5f with one path alone, "
-              "worst ratio %.3f\n",
-              worst_switch, worst_alone, worst_ratio);
+  std::printf(
+      "switch: worst second difference %.5f with the switch, %.5f with one path alone, "
+      "worst ratio %.3f\n",
+      worst_switch, worst_alone, worst_ratio);
   // The measure must see a pop where there is one: a switch within 10 m.
   auto hard = climb(HillaireTechnique::Path::kByAltitude, 1e-4);
   double worst_hard_ratio = 0;
   for (int i = 1; i + 1 < kFrames; ++i) {
-    double d_alone =
-        std::max(second_difference(luts, i), second_difference(per_pixel, i));
+    double d_alone = std::max(second_difference(luts, i), second_difference(per_pixel, i));
     worst_hard_ratio = std::max(worst_hard_ratio, second_difference(hard, i) / d_alone);
   }
   std::printf("switch within 10 m: worst ratio %.3f\n", worst_hard_ratio);

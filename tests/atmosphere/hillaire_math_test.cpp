@@ -1,7 +1,7 @@
 // The Legendre series of Cornette-Shanks and the forward gain
 // (atmosphere/shaders/hillaire_functions.glsl, compiled as C++), against
 // direct integration and against light scattered at random.
-#include "atmosphere/hillaire_math.h"
+#include "atmosphere/math/hillaire_math.h"
 #include "atmosphere/reference/sampling.h"
 
 #include <gtest/gtest.h>
@@ -52,25 +52,25 @@ TEST(HillaireMathTest, CornetteShanksLegendreCoefficientsMatchTheIntegral) {
 // relies on both.
 TEST(HillaireMathTest, FieldBasisIsOrthonormalAndAddsUpToLegendre) {
   const int rows = 180, columns = 360;
-  std::vector<double> gram(size_t(shared::kFieldParts * shared::kFieldParts), 0.0);
+  std::vector<double> gram(size_t(hillaire::kFieldParts * hillaire::kFieldParts), 0.0);
   for (int j = 0; j < rows; ++j) {
     double z = 1.0 - 2.0 * (j + 0.5) / rows;  // uniform in z: equal areas
     double s = std::sqrt(1.0 - z * z);
     for (int i = 0; i < columns; ++i) {
       double phi = 2.0 * shared::kPi * (i + 0.5) / columns;
       double x = s * std::cos(phi), y = s * std::sin(phi);
-      for (int a = 0; a < shared::kFieldParts; ++a) {
-        for (int b = 0; b < shared::kFieldParts; ++b) {
-          gram[size_t(a * shared::kFieldParts + b)] +=
-              shared::field_basis(a, x, y, z) * shared::field_basis(b, x, y, z);
+      for (int a = 0; a < hillaire::kFieldParts; ++a) {
+        for (int b = 0; b < hillaire::kFieldParts; ++b) {
+          gram[size_t(a * hillaire::kFieldParts + b)] +=
+              hillaire::field_basis(a, x, y, z) * hillaire::field_basis(b, x, y, z);
         }
       }
     }
   }
-  for (int a = 0; a < shared::kFieldParts; ++a) {
-    for (int b = 0; b < shared::kFieldParts; ++b) {
-      EXPECT_NEAR(gram[size_t(a * shared::kFieldParts + b)] / (rows * columns), a == b ? 1.0 : 0.0,
-                  1e-3)
+  for (int a = 0; a < hillaire::kFieldParts; ++a) {
+    for (int b = 0; b < hillaire::kFieldParts; ++b) {
+      EXPECT_NEAR(gram[size_t(a * hillaire::kFieldParts + b)] / (rows * columns),
+                  a == b ? 1.0 : 0.0, 1e-3)
           << "parts " << a << ", " << b;
     }
   }
@@ -83,10 +83,11 @@ TEST(HillaireMathTest, FieldBasisIsOrthonormalAndAddsUpToLegendre) {
   for (int trial = 0; trial < 100; ++trial) {
     glm::dvec3 w = random_direction(), d = random_direction();
     glm::dvec3 mirror(w.x, -w.y, w.z);
-    for (int l = 0; l <= shared::kFieldDegree; ++l) {
+    for (int l = 0; l <= hillaire::kFieldDegree; ++l) {
       double sum = 0.0;
       for (int part = l * (l + 1) / 2; part < (l + 1) * (l + 2) / 2; ++part) {
-        sum += shared::field_basis(part, w.x, w.y, w.z) * shared::field_basis(part, d.x, d.y, d.z);
+        sum +=
+            hillaire::field_basis(part, w.x, w.y, w.z) * hillaire::field_basis(part, d.x, d.y, d.z);
       }
       double expected =
           (2 * l + 1) * 0.5 * (legendre(l, glm::dot(w, d)) + legendre(l, glm::dot(mirror, d)));
@@ -105,13 +106,13 @@ TEST(HillaireMathTest, FieldBasisIsOrthonormalAndAddsUpToLegendre) {
 //   exp(-tau) p + exp(-tau) forward_gain + the terms l <= L of the rest.
 double spread_distribution(double g, double nu, double tau) {
   double low = 0.0;
-  for (int l = 0; l <= shared::kFieldDegree; ++l) {
+  for (int l = 0; l <= hillaire::kFieldDegree; ++l) {
     double g_l = shared::cornette_shanks_legendre(g, l);
     low += (2 * l + 1) / (4.0 * shared::kPi) * g_l *
            (std::exp((g_l - 1.0) * tau) - std::exp(-tau)) * legendre(l, nu);
   }
   return std::exp(-tau) * shared::cornette_shanks_phase(g, nu) +
-         shared::forward_gain_times_extinction(g, nu, tau) + low;
+         hillaire::forward_gain_times_extinction(g, nu, tau) + low;
 }
 
 TEST(HillaireMathTest, ForwardGainMatchesLightScatteredAtRandom) {
@@ -125,8 +126,8 @@ TEST(HillaireMathTest, ForwardGainMatchesLightScatteredAtRandom) {
       Rng rng(uint64_t(1000 * g + 10 * tau));
       const glm::dvec3 sun(0, 0, 1);
       for (int i = 0; i < photons; ++i) {
-        glm::dvec3 d = reference::direction_about(
-            sun, reference::sample_cornette_shanks_mu(g, rng), 2.0 * shared::kPi * rng.uniform());
+        glm::dvec3 d = reference::direction_about(sun, reference::sample_cornette_shanks_mu(g, rng),
+                                                  2.0 * shared::kPi * rng.uniform());
         for (double t = -std::log(1.0 - rng.uniform()); t < tau;
              t -= std::log(1.0 - rng.uniform())) {
           d = reference::direction_about(d, reference::sample_cornette_shanks_mu(g, rng),
@@ -155,20 +156,20 @@ TEST(HillaireMathTest, ForwardGainMatchesLightScatteredAtRandom) {
 
 TEST(HillaireMathTest, ForwardGainMovesLightWithoutMakingIt) {
   for (double g : {0.75, 0.8}) {
-    EXPECT_EQ(shared::forward_gain_times_extinction(g, 0.3, 0.0), 0.0);
+    EXPECT_EQ(hillaire::forward_gain_times_extinction(g, 0.3, 0.0), 0.0);
     for (double tau : {0.1, 1.0, 10.0}) {
       // No light made or lost: the gain integrates to zero over the sphere.
       const int n = 200000;
       double total = 0.0, magnitude = 0.0;
       for (int i = 0; i < n; ++i) {
         double nu = -1.0 + 2.0 * (i + 0.5) / n;
-        double gain = shared::forward_gain_times_extinction(g, nu, tau);
+        double gain = hillaire::forward_gain_times_extinction(g, nu, tau);
         total += gain;
         magnitude += std::abs(gain);
       }
       EXPECT_LT(std::abs(total), 1e-6 * magnitude) << "g " << g << " tau " << tau;
       // Light is moved toward the sun.
-      EXPECT_GT(shared::forward_gain_times_extinction(g, 1.0, tau), 0.0);
+      EXPECT_GT(hillaire::forward_gain_times_extinction(g, 1.0, tau), 0.0);
     }
   }
 }

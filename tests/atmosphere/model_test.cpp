@@ -1,9 +1,9 @@
 // The atmosphere model as loaded from body files: the shipped presets, and
 // one failing case per validation rule with its message checked.
 #include "atmosphere/model.h"
+#include "core/data_paths.h"
+#include "core/error.h"
 #include "sim/body.h"
-#include "sim/data_paths.h"
-#include "sim/error.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -78,7 +78,7 @@ TEST(AtmosphereModelTest, EveryShippedBodyLoads) {
   for (const char* name : {"earth", "mars", "asteroid"}) {
     Body body = load_body(find_body_file(name));
     ASSERT_TRUE(body.has_atmosphere()) << name;
-    AtmosphereModel m = parse_atmosphere(JsonObject(body.atmosphere, body.file.string(), "atmosphere"));
+    AtmosphereModel m = load_atmosphere(body);
     EXPECT_TRUE(m.spectrum) << name;
     EXPECT_GT(m.top_radius, m.bottom_radius) << name;
   }
@@ -126,7 +126,9 @@ TEST(AtmosphereModelTest, LayersMustLieInsideTheAtmosphere) {
 }
 
 TEST(AtmosphereModelTest, ExtinctionMustNotBeBelowScattering) {
-  EXPECT_EQ(error_after([](nlohmann::json& a) { a["mie"]["extinction"] = {3e-6, 3e-6, 3e-6}; }),
+  EXPECT_EQ(error_after([](nlohmann::json& a) {
+              a["mie"]["extinction"] = {3e-6, 3e-6, 3e-6};
+            }),
             "bad.json: atmosphere.mie.extinction: must not be below scattering");
   EXPECT_EQ(error_after([](nlohmann::json& a) { a["spectrum"]["mie_extinction"]["value"] = 1e-6; }),
             "bad.json: atmosphere.spectrum.mie_extinction: must not be below mie_scattering (at "
@@ -134,7 +136,9 @@ TEST(AtmosphereModelTest, ExtinctionMustNotBeBelowScattering) {
 }
 
 TEST(AtmosphereModelTest, RayleighAbsorptionBelongsToTheAbsorber) {
-  EXPECT_EQ(error_after([](nlohmann::json& a) { a["rayleigh"]["absorption"] = {1e-7, 0, 0}; }),
+  EXPECT_EQ(error_after([](nlohmann::json& a) {
+              a["rayleigh"]["absorption"] = {1e-7, 0, 0};
+            }),
             "bad.json: atmosphere.rayleigh: absorption must be zero; give it as the absorber "
             "component");
 }
@@ -158,8 +162,9 @@ TEST(AtmosphereModelTest, SpectrumNeedsEnoughIncreasingSamplesOverTheVisible) {
 TEST(AtmosphereModelTest, UnknownKeysAreRejected) {
   EXPECT_EQ(error_after([](nlohmann::json& a) { a["rayleigh"]["scale_height_m"] = 8000.0; }),
             "bad.json: atmosphere.rayleigh.scale_height_m: unknown key");
-  EXPECT_EQ(error_after([](nlohmann::json& a) { a["spectrum"]["rayleigh_scattering"]["slope"] = 4.0; }),
-            "bad.json: atmosphere.spectrum.rayleigh_scattering.slope: unknown key");
+  EXPECT_EQ(
+      error_after([](nlohmann::json& a) { a["spectrum"]["rayleigh_scattering"]["slope"] = 4.0; }),
+      "bad.json: atmosphere.spectrum.rayleigh_scattering.slope: unknown key");
 }
 
 TEST(AtmosphereModelTest, DenseVariantScalesScatteringOnly) {

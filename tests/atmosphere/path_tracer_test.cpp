@@ -4,11 +4,11 @@
 // integration, energy conservation (a furnace), and bit-identical renders
 // at any thread count. Statistical
 // tests use fixed seeds, so they pass or fail the same way every run.
-#include "atmosphere/reference/path_tracer.h"
-#include "atmosphere/scenes/scene.h"
-#include "atmosphere/shared_math.h"
+#include "atmosphere/math/shared_math.h"
+#include "atmosphere/reference/reference_render.h"
+#include "core/error.h"
+#include "lab/scene.h"
 #include "sim/body.h"
-#include "sim/error.h"
 
 #include <gtest/gtest.h>
 
@@ -24,7 +24,7 @@ using reference::Rng;
 
 AtmosphereModel earth_model() {
   Body body = load_body(find_body_file("earth"));
-  return parse_atmosphere(JsonObject(body.atmosphere, body.file.string(), "atmosphere"));
+  return load_atmosphere(body);
 }
 
 // Pearson's chi-square of `samples` values of mu in [-1, 1] against the
@@ -136,11 +136,11 @@ double single_scattering_quadrature(const AtmosphereModel& model, int channel, g
     if (shared::ray_intersects_ground(a, r, mu_s)) continue;
     double sun_t = std::exp(-shared::optical_depth_to_top(a, r, mu_s, 400)[channel]);
     double nu = glm::dot(d, sun);
-    double scattering =
-        model.rayleigh.scattering[channel] * model.rayleigh.density.density(altitude) *
-            shared::rayleigh_phase(nu) +
-        model.mie.scattering[channel] * model.mie.density.density(altitude) *
-            shared::cornette_shanks_phase(model.mie_g, nu);
+    double scattering = model.rayleigh.scattering[channel] *
+                            density_at(model.rayleigh.density, altitude) *
+                            shared::rayleigh_phase(nu) +
+                        model.mie.scattering[channel] * density_at(model.mie.density, altitude) *
+                            shared::cornette_shanks_phase(model.mie_g, nu);
     radiance += std::exp(-tau_mid) * scattering * sun_t * dt;
   }
   return radiance * model.solar_irradiance[channel];
@@ -167,7 +167,8 @@ TEST(PathTracerTest, SingleScatteringAgreesWithQuadrature) {
       {"ground, 45 deg up, 90 deg from the sun", {0, 0, 6360e3 + 2.0}, dir(45, 90)},
       {"ground, near the horizon toward the sun", {0, 0, 6360e3 + 2.0}, dir(88, 0)},
       {"10 km up, looking down into shadowless air", {0, 0, 6370e3}, dir(120, 180)},
-      {"from space through the limb, 15 km above the ground", {-7000e3, 0, 6375e3},
+      {"from space through the limb, 15 km above the ground",
+       {-7000e3, 0, 6375e3},
        glm::dvec3(1, 0, 0)},
   };
   for (const Case& c : cases) {
@@ -193,8 +194,8 @@ glm::dvec3 midpoint_columns(const Medium& m, double r, double mu) {
   for (int i = 0; i < steps; ++i) {
     double t = (i + 0.5) * dt;
     double h = std::sqrt(r * r + t * t + 2.0 * r * t * mu) - m.bottom_radius;
-    sum += dt * glm::dvec3(m.rayleigh_density.density(h), m.mie_density.density(h),
-                           m.absorber_density.density(h));
+    sum += dt * glm::dvec3(density_at(m.rayleigh_density, h), density_at(m.mie_density, h),
+                           density_at(m.absorber_density, h));
   }
   return sum;
 }
@@ -202,8 +203,7 @@ glm::dvec3 midpoint_columns(const Medium& m, double r, double mu) {
 TEST(PathTracerTest, ColumnTableMatchesDirectIntegration) {
   for (const char* body_name : {"earth", "mars"}) {
     Body body = load_body(find_body_file(body_name));
-    AtmosphereModel model =
-        parse_atmosphere(JsonObject(body.atmosphere, body.file.string(), "atmosphere"));
+    AtmosphereModel model = load_atmosphere(body);
     Medium medium = make_medium(model, ReferenceMode::kRgb);
     const ColumnTable table(medium);
     std::vector<DepthTable> depths;
@@ -213,8 +213,8 @@ TEST(PathTracerTest, ColumnTableMatchesDirectIntegration) {
     int n = 0;
     for (int i = 0; i < 2000; ++i) {
       // Heights packed toward the ground, half the rays near the horizon.
-      double r = medium.bottom_radius + (medium.top_radius - medium.bottom_radius) *
-                                            std::pow(rng.uniform(), 3.0);
+      double r = medium.bottom_radius +
+                 (medium.top_radius - medium.bottom_radius) * std::pow(rng.uniform(), 3.0);
       double ratio = medium.bottom_radius / r;
       double horizon = -std::sqrt(1.0 - ratio * ratio);
       double mu = i % 2 ? horizon + (1.0 - horizon) * std::pow(rng.uniform(), 4.0)
@@ -259,9 +259,9 @@ TEST(PathTracerTest, PathBudgetsSpreadOverLanes) {
   for (const char* bad : {"", "12x", "0", "-6", "4,,4", "4,", "99999999999", " 5", "+5", "4, 4"}) {
     EXPECT_THROW(PathBudget::parse(bad), InputError) << bad;
   }
-  EXPECT_THROW(PathBudget(5).lane_paths(3), InputError);                    // a lane with none
-  EXPECT_THROW(PathBudget::parse("4,4").lane_paths(3), InputError);        // channels
-  EXPECT_THROW(PathBudget::parse("4,1,4").lane_paths(3), InputError);      // a replicate with none
+  EXPECT_THROW(PathBudget(5).lane_paths(3), InputError);               // a lane with none
+  EXPECT_THROW(PathBudget::parse("4,4").lane_paths(3), InputError);    // channels
+  EXPECT_THROW(PathBudget::parse("4,1,4").lane_paths(3), InputError);  // a replicate with none
 }
 
 TEST(PathTracerTest, StratifiedPairsFillEveryElementaryInterval) {
@@ -317,9 +317,9 @@ TEST(PathTracerTest, WhiteFurnaceLosesNoEnergy) {
   // pixel off by many standard errors, and the whole image as well.
   glm::dvec3 ground(0, 0, 6360e3 + 2.0), space(0, -8000e3, 0);
   for (double scale : {1.0, 50.0}) {
-    for (auto [camera, forward] : {std::pair{ground, glm::dvec3(0.6, 0, 0.8)},
-                                   std::pair{ground, glm::dvec3(0.8, 0, -0.6)},
-                                   std::pair{space, glm::dvec3(0, 1, 0)}}) {
+    for (auto [camera, forward] :
+         {std::pair{ground, glm::dvec3(0.6, 0, 0.8)}, std::pair{ground, glm::dvec3(0.8, 0, -0.6)},
+          std::pair{space, glm::dvec3(0, 1, 0)}}) {
       ReferenceImage image = furnace(1.0, scale, camera, forward);
       // Each pixel's standard error comes from two replicates, too rough
       // to judge a pixel by; their mean square over the image is not.

@@ -1,9 +1,9 @@
 // The same shared functions on the GPU (llvmpipe compute, float) and on the
 // CPU (C++ double): they must agree to what float arithmetic allows.
-#include "atmosphere/shared_math.h"
-#include "render/gl/context.h"
-#include "render/gl/program.h"
-#include "render/gl/texture.h"
+#include "atmosphere/math/shared_math.h"
+#include "gl/context.h"
+#include "gl/program.h"
+#include "gl/texture.h"
 
 #include <gtest/gtest.h>
 

@@ -1,12 +1,7 @@
 // Evaluates the shared atmosphere functions in float for the agreement test
 // (tests/atmosphere/shared_math_gl_test.cpp): one input (r, mu, H, nu) per
 // invocation, four vec4 of results.
-#define Real float
-#define Real2 vec2
-#define Real3 vec3
-#define IN(T) in T
-#define OUT(T) out T
-#include "atmosphere/shaders/atmosphere_functions.glsl"
+#include "atmosphere/shaders/atmosphere_block.glsl"
 
 layout(local_size_x = 64) in;
 layout(std430, binding = 0) readonly buffer Inputs { vec4 inputs[]; };

@@ -1,6 +1,6 @@
 // The shared math (atmosphere/shaders/atmosphere_functions.glsl compiled as
 // C++ double) against closed forms.
-#include "atmosphere/shared_math.h"
+#include "atmosphere/math/shared_math.h"
 
 #include <gtest/gtest.h>
 
@@ -65,8 +65,8 @@ TEST(SharedMathTest, ExponentialOpticalDepthAnalyticMatchesQuadrature) {
 TEST(SharedMathTest, ChapmanVerticalIsTheScaleHeight) {
   // Straight up to infinity: the integral of exp(-z / H) is exactly H; the
   // expansion's neglected terms are O((H / r)^2 / mu^4), 1.6e-6 * 4 here.
-  EXPECT_NEAR(shared::chapman_optical_depth_to_infinity(6360e3, 8000.0, 6360e3, 1.0) / 8000.0,
-              1.0, 2e-5);
+  EXPECT_NEAR(shared::chapman_optical_depth_to_infinity(6360e3, 8000.0, 6360e3, 1.0) / 8000.0, 1.0,
+              2e-5);
   // Horizontal: sqrt(pi r H / 2) to leading order (Chapman 1931).
   double horizontal = shared::chapman_optical_depth_to_infinity(6360e3, 8000.0, 6360e3, 0.0);
   EXPECT_NEAR(horizontal / std::sqrt(shared::kPi * 6360e3 * 8000.0 / 2.0), 1.0, 2e-3);

@@ -1,8 +1,8 @@
 // Frames rendered headless and checked for what a person must see in them.
 #include "render/frame.h"
 
-#include "render/gl/context.h"
-#include "sim/data_paths.h"
+#include "core/data_paths.h"
+#include "gl/context.h"
 #include "sim/geodesy.h"
 
 #include "tests/render/view_from_place.h"
@@ -23,8 +23,7 @@ class FrameGLTest : public ::testing::Test {
     // These test the sky over a smooth Earth: without relief the camera
     // stays above ground wherever a test puts it.
     body_.terrain = nullptr;
-    AtmosphereModel model =
-        parse_atmosphere(JsonObject(body_.atmosphere, body_.file.string(), "atmosphere"));
+    AtmosphereModel model = load_atmosphere(body_);
     renderer_ = std::make_unique<FrameRenderer>(kSize, kSize);
     renderer_->set_body(body_, model, make_technique("raymarch"));
   }

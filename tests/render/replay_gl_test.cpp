@@ -2,8 +2,8 @@
 // the same frames, byte for byte.
 #include "render/frame.h"
 
-#include "render/gl/context.h"
-#include "sim/data_paths.h"
+#include "core/data_paths.h"
+#include "gl/context.h"
 #include "sim/flight_recorder.h"
 #include "sim/flight_script.h"
 #include "sim/free_flight.h"
@@ -19,9 +19,7 @@ namespace {
 TEST(ReplayGLTest, RecordedFlightReplaysByteIdenticalFrames) {
   auto context = GlContext::create_headless();
   Body earth = load_body(data_dir() / "planets" / "earth.json");
-  auto model = [&] {
-    return parse_atmosphere(JsonObject(earth.atmosphere, earth.file.string(), "atmosphere"));
-  };
+  auto model = [&] { return load_atmosphere(earth); };
   const int w = 64, h = 32;
   FrameRenderer live(w, h);
   live.set_body(earth, model(), make_technique("raymarch"));

@@ -1,6 +1,6 @@
 #include "sim/flight_script.h"
 
-#include "sim/error.h"
+#include "core/error.h"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/constants.hpp>

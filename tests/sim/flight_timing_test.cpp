@@ -1,9 +1,9 @@
 // Flight scripts with a clock, orbits and look-at targets: smoothness of
 // position and attitude at keyframes, no flip over a pole, the sun
 // following the clock, and bad input.
+#include "core/data_paths.h"
+#include "core/error.h"
 #include "sim/attitude_curve.h"
-#include "sim/data_paths.h"
-#include "sim/error.h"
 #include "sim/flight_recorder.h"
 #include "sim/flight_script.h"
 #include "sim/free_flight.h"

@@ -1,7 +1,7 @@
 // Two-body propagation: conserved quantities and Kepler's third law.
 #include "sim/kepler.h"
+#include "core/error.h"
 #include "sim/body.h"
-#include "sim/error.h"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/constants.hpp>

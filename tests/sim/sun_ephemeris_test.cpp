@@ -1,8 +1,8 @@
 // Earth's sun against independent references: Meeus's worked examples and
 // a second, independently fitted algorithm (PSA, Blanco-Muriel et al. 2001).
 #include "sim/sun_ephemeris.h"
+#include "core/error.h"
 #include "sim/body.h"
-#include "sim/error.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>

@@ -1,5 +1,5 @@
 #include "sim/utc_time.h"
-#include "sim/error.h"
+#include "core/error.h"
 
 #include <gtest/gtest.h>
 

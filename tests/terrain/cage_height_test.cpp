@@ -4,8 +4,8 @@
 #include "terrain/obj_cage.h"
 #include "terrain/terrain_config.h"
 
-#include "sim/data_paths.h"
-#include "sim/error.h"
+#include "core/data_paths.h"
+#include "core/error.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -79,7 +79,8 @@ TEST(ObjCageTest, ReadsEveryIndexFormAndMergesSeams) {
   // The same cube with v, v/vt, v//vn, v/vt/vn and negative indices.
   std::string text = cube_obj({"1 3 4 2", "5/1 6/2 8/3 7/4", "1//1 2//1 6//1 5//1",
                                "3/1/1 7/1/1 8/1/1 4/1/1", "-8 -4 -2 -6", "2 4 8 6"});
-  ObjCage cage = read_obj_cage(write_obj("forms.obj", "# comment\no cube\nvt 0 0\nvn 0 0 1\n" + text));
+  ObjCage cage =
+      read_obj_cage(write_obj("forms.obj", "# comment\no cube\nvt 0 0\nvn 0 0 1\n" + text));
   EXPECT_EQ(cage.vertices.size(), 8u);
   ASSERT_EQ(cage.face_sizes.size(), 6u);
   EXPECT_EQ(cage.face_indices[16], 0);  // -8 of 8 vertices is the first
@@ -124,8 +125,10 @@ TEST(ObjCageTest, BadCagesNameTheFileAndLine) {
   expect_error("negative.obj", cube_obj({"1 3 4 -9"}), "out of range", 9);
   expect_error("syntax.obj", cube_obj({"1 3 x 2"}), "not a vertex index", 9);
   // Three triangles on the edge from vertex 1 to vertex 2.
-  expect_error("fan.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 0 -1 0\n"
-               "f 1 2 3\nf 2 1 4\nf 1 2 5\n", "more than two faces", 8);
+  expect_error("fan.obj",
+               "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 0 -1 0\n"
+               "f 1 2 3\nf 2 1 4\nf 1 2 5\n",
+               "more than two faces", 8);
   std::vector<std::string> flipped = kCubeFaces;
   flipped[5] = "2 6 8 4";
   expect_error("flipped.obj", cube_obj(flipped), "not consistently oriented");
@@ -160,7 +163,8 @@ TEST(CageHeightTest, CubeLimitIsTheKnownCatmullClarkLimit) {
   // Scaled to a body of radius 1000 m: by symmetry the corners' and the
   // faces' radii keep their ratio.
   CageHeight h(cube, "cube.obj", 1000.0, {});
-  double r_face = h.surface_radius({0, 0, 1}), r_corner = h.surface_radius(glm::normalize(glm::dvec3(1)));
+  double r_face = h.surface_radius({0, 0, 1}),
+         r_corner = h.surface_radius(glm::normalize(glm::dvec3(1)));
   EXPECT_NEAR(r_corner / r_face, (std::sqrt(3.0) / 2.0) / (68.0 / 81.0), 1e-3);
   EXPECT_NEAR(h.surface_radius({0, -1, 0}), r_face, 1e-6);
 }
@@ -237,7 +241,8 @@ TEST(CageHeightTest, AsteroidBodyFileUsesTheCage) {
   EXPECT_LT(r.min, -3000.0);
   EXPECT_GT(r.max, 3000.0);
 
-  body.terrain = nlohmann::json::parse(R"({"height": {"type": "cage", "file": "/nonexistent/shape.obj"}})");
+  body.terrain =
+      nlohmann::json::parse(R"({"height": {"type": "cage", "file": "/nonexistent/shape.obj"}})");
   try {
     parse_terrain(body);
     FAIL() << "missing cage accepted";

@@ -3,7 +3,7 @@
 #include "terrain/height_map.h"
 #include "terrain/terrain_config.h"
 
-#include "sim/error.h"
+#include "core/error.h"
 
 #include <OpenImageIO/imageio.h>
 #include <gtest/gtest.h>

@@ -3,16 +3,16 @@
 #include "terrain/lod.h"
 #include "terrain/tile_cache.h"
 
-#include "terrain/cube_sphere.h"
-#include "sim/data_paths.h"
+#include "core/data_paths.h"
 #include "sim/geodesy.h"
+#include "terrain/cube_sphere.h"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/constants.hpp>
 
+#include <unistd.h>
 #include <fstream>
 #include <random>
-#include <unistd.h>
 #include <unordered_map>
 
 namespace planet {
@@ -21,10 +21,9 @@ namespace {
 LodView view_at(const Geodesy& geodesy, const Geodetic& place, double heading, double pitch,
                 int height_px) {
   LodView v;
-  v.eye_body = geodesy.body_from_geodetic(place);
-  glm::dquat body_from_camera =
-      glm::quat_cast(geodesy.body_from_enu(place)) * enu_from_camera(heading, pitch, 0.0);
-  v.view_from_body = glm::mat3_cast(glm::conjugate(body_from_camera));
+  Camera camera = geodesy.camera_at(place, heading, pitch, Camera().vertical_fov);
+  v.eye_body = camera.pos_body;
+  v.view_from_body = glm::mat3_cast(glm::conjugate(camera.body_from_camera));
   v.tan_half_fov_y = std::tan(glm::radians(30.0));
   v.aspect = 16.0 / 9.0;
   v.height_px = height_px;
@@ -152,9 +151,8 @@ TEST(TileCacheTest, LongFlightStaysUnderBudgetWithoutGrowth) {
     Geodetic place{glm::radians(30.0 * std::sin(6.0 * f)), glm::radians(-180.0 + 720.0 * f),
                    50.0 + 2e5 * f * f};
     LodView view = view_at(geodesy, place, glm::radians(90.0), glm::radians(-20.0), 270);
-    LodSelection sel = selector.select(view, [&](const TileKey& k, ResidentTile& t) {
-      return cache.lookup(k, t);
-    });
+    LodSelection sel = selector.select(
+        view, [&](const TileKey& k, ResidentTile& t) { return cache.lookup(k, t); });
     cache.request(sel.wanted);
     for (const SelectedTile& t : sel.tiles) ASSERT_TRUE(cache.use(t.key, uint64_t(frame)));
     cache.evict(uint64_t(frame));
@@ -165,8 +163,8 @@ TEST(TileCacheTest, LongFlightStaysUnderBudgetWithoutGrowth) {
   size_t rss_end = resident_set_bytes();
   std::printf("tiles built %llu, resident at most %.1f MiB of %.1f, process %.1f -> %.1f MiB\n",
               (unsigned long long)cache.tiles_built(), double(worst_bytes) / 1048576.0,
-              double(budget) / 1048576.0,
-              double(rss_warm) / 1048576.0, double(rss_end) / 1048576.0);
+              double(budget) / 1048576.0, double(rss_warm) / 1048576.0,
+              double(rss_end) / 1048576.0);
   EXPECT_GT(cache.tiles_built(), budget / (kTileVertexCount * sizeof(TileVertex)))
       << "the flight must overflow the cache";
   // Tiles finished by the worker after the last eviction may add a few.

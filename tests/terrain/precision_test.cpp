@@ -2,9 +2,9 @@
 // vertex shader does it, in float, while the camera moves in 1 mm steps.
 #include "terrain/tile_mesh.h"
 
-#include "terrain/cube_sphere.h"
-#include "sim/data_paths.h"
+#include "core/data_paths.h"
 #include "sim/geodesy.h"
+#include "terrain/cube_sphere.h"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/constants.hpp>
@@ -34,9 +34,11 @@ double worst_unexplained_step(const TileMesh& tile, glm::dvec3 eye, const glm::d
   // The vertices in view from the start.
   std::vector<int> in_view;
   for (int i = 0; i < kTileGrid * kTileGrid; ++i) {
-    glm::dvec3 v = p.view_from_body * (tile.center_body + glm::dvec3(tile.vertices[size_t(i)].offset) - eye);
+    glm::dvec3 v =
+        p.view_from_body * (tile.center_body + glm::dvec3(tile.vertices[size_t(i)].offset) - eye);
     glm::dvec2 px = p.pixel(v);
-    if (-v.z > 0.1 && px.x >= 0 && px.y >= 0 && px.x < kWidth && px.y < kHeight) in_view.push_back(i);
+    if (-v.z > 0.1 && px.x >= 0 && px.y >= 0 && px.x < kWidth && px.y < kHeight)
+      in_view.push_back(i);
   }
   EXPECT_GT(in_view.size(), 20u);
   double worst = 0;
@@ -47,9 +49,10 @@ double worst_unexplained_step(const TileMesh& tile, glm::dvec3 eye, const glm::d
     for (int i : in_view) {
       const glm::vec3& offset = tile.vertices[size_t(i)].offset;
       glm::dvec3 exact = tile.center_body + glm::dvec3(offset) - eye;
-      glm::vec3 rel = camera_relative ? center_rel_eye + offset
-                                      // Body-frame vertex and eye in float, subtracted on the GPU.
-                                      : glm::vec3(tile.center_body + glm::dvec3(offset)) - glm::vec3(eye);
+      glm::vec3 rel = camera_relative
+                          ? center_rel_eye + offset
+                          // Body-frame vertex and eye in float, subtracted on the GPU.
+                          : glm::vec3(tile.center_body + glm::dvec3(offset)) - glm::vec3(eye);
       now_d.push_back(p.pixel(p.view_from_body * exact));
       now_f.push_back(p.pixel_f(rel));
     }
@@ -91,7 +94,8 @@ TEST_P(PrecisionTest, VerticesMoveSmoothlyOnlyWithCameraRelativePlacement) {
   // Looking straight down at the tile, moving east.
   glm::dmat3 enu = geodesy.body_from_enu(place);
   Projector p;
-  p.view_from_body = glm::transpose(enu * glm::dmat3(glm::mat3_cast(enu_from_camera(0, -glm::half_pi<double>(), 0))));
+  p.view_from_body = glm::transpose(
+      enu * glm::dmat3(glm::mat3_cast(enu_from_camera(0, -glm::half_pi<double>(), 0))));
   p.f = 0.5 * kHeight / std::tan(glm::radians(30.0));
   glm::dvec3 step = enu[0] * 1e-3;
 
@@ -99,8 +103,9 @@ TEST_P(PrecisionTest, VerticesMoveSmoothlyOnlyWithCameraRelativePlacement) {
   double absolute = worst_unexplained_step(tile, eye, step, p, false);
   RecordProperty("camera_relative_px", std::to_string(relative));
   RecordProperty("absolute_px", std::to_string(absolute));
-  std::printf("height %.0f m, level %d: unexplained step %.2e px camera-relative, %.2e px absolute\n",
-              GetParam().height, level, relative, absolute);
+  std::printf(
+      "height %.0f m, level %d: unexplained step %.2e px camera-relative, %.2e px absolute\n",
+      GetParam().height, level, relative, absolute);
   EXPECT_LT(relative, 0.05);
   if (GetParam().height < 100) {
     // Without camera-relative placement, float body coordinates (0.5 m
@@ -109,11 +114,10 @@ TEST_P(PrecisionTest, VerticesMoveSmoothlyOnlyWithCameraRelativePlacement) {
   }
 }
 
-INSTANTIATE_TEST_SUITE_P(Heights, PrecisionTest,
-                         ::testing::Values(Case{2.0, 20}, Case{400e3, 9}),
+INSTANTIATE_TEST_SUITE_P(Heights, PrecisionTest, ::testing::Values(Case{2.0, 20}, Case{400e3, 9}),
                          [](const ::testing::TestParamInfo<Case>& param_info) {
                            return param_info.param.height < 100 ? std::string("Ground2m")
-                                                          : std::string("Orbit400km");
+                                                                : std::string("Orbit400km");
                          });
 
 }  // namespace

@@ -1,9 +1,9 @@
 // Tile geometry: the cube-sphere map, tile meshes and their error bounds.
+#include "terrain/tile_mesh.h"
 #include "terrain/cube_sphere.h"
 #include "terrain/noise.h"
-#include "terrain/tile_mesh.h"
 
-#include "sim/data_paths.h"
+#include "core/data_paths.h"
 
 #include <gtest/gtest.h>
 #include <glm/gtc/constants.hpp>
@@ -25,7 +25,9 @@ TEST(CubeSphereTest, TangentWarpKeepsCellAreasWithinFactor1_5) {
   double lo = 1e300, hi = 0;
   for (int j = 0; j < n; ++j) {
     for (int i = 0; i < n; ++i) {
-      auto p = [&](int a, int b) { return cube_to_sphere(0, -1.0 + 2.0 * a / n, -1.0 + 2.0 * b / n); };
+      auto p = [&](int a, int b) {
+        return cube_to_sphere(0, -1.0 + 2.0 * a / n, -1.0 + 2.0 * b / n);
+      };
       glm::dvec3 p00 = p(i, j), p10 = p(i + 1, j), p01 = p(i, j + 1), p11 = p(i + 1, j + 1);
       double area = 0.5 * glm::length(glm::cross(p10 - p00, p11 - p00)) +
                     0.5 * glm::length(glm::cross(p11 - p00, p01 - p00));

@@ -2,8 +2,7 @@
 // LUT lookups the shared integrals call, and the integrals themselves
 // (atmosphere/shaders/hillaire_functions.glsl, also compiled on the CPU).
 #include "atmosphere/shaders/atmosphere_block.glsl"
-
-#define INOUT(T) inout T
+#include "atmosphere/shaders/hillaire_definitions.glsl"
 
 Real3 transmittance_lookup(IN(Atmosphere) atmosphere, Real r, Real mu);
 Real mie_column_lookup(IN(Atmosphere) atmosphere, Real r, Real mu);
@@ -12,6 +11,8 @@ Real3 scattering_order_lookup(Real u, Real v, int part);
 Real3 ground_order_lookup(IN(Atmosphere) atmosphere, Real mu_s);
 Real forward_gain_lookup(IN(Atmosphere) atmosphere, Real nu, Real tau);
 
+#include "atmosphere/shaders/sunlight.glsl"
+#include "atmosphere/shaders/ground.glsl"
 #include "atmosphere/shaders/hillaire_functions.glsl"
 
 #ifdef TRANSMITTANCE_PASS

@@ -1,8 +1,8 @@
 #include "atmosphere/gpu/hillaire/hillaire_technique.h"
 
 #include "atmosphere/gpu/atmosphere_block.h"
-#include "atmosphere/hillaire_math.h"
-#include "render/gl/timer.h"
+#include "atmosphere/math/hillaire_math.h"
+#include "gl/timer.h"
 
 #include <fmt/format.h>
 #include <glm/gtc/type_ptr.hpp>
@@ -21,18 +21,6 @@ constexpr GLbitfield kLutBarrier =
     GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT;
 
 GLuint groups(int size) { return GLuint((size + int(kGroupSize) - 1) / int(kGroupSize)); }
-
-Texture make_texture_3d(GLenum internal_format, int size) {
-  GLuint id = 0;
-  glCreateTextures(GL_TEXTURE_3D, 1, &id);
-  glTextureStorage3D(id, 1, internal_format, size, size, size);
-  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-  glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-  glTextureParameteri(id, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
-  return Texture(id);
-}
 
 double smoothstep(double e0, double e1, double x) {
   double t = std::clamp((x - e0) / (e1 - e0), 0.0, 1.0);
@@ -111,26 +99,30 @@ HillaireTechnique::HillaireTechnique(Settings settings)
           "atmosphere/gpu/hillaire/aerial_perspective.comp",
           view_defines(settings, fmt::format("AERIAL_SUBSTEPS {}", settings.aerial_substeps)))),
       sky_program_(Program::graphics(
-          "render/shaders/fullscreen.vert", "atmosphere/gpu/hillaire/hillaire_sky.frag",
+          "gl/shaders/fullscreen.vert", "atmosphere/gpu/hillaire/hillaire_sky.frag",
           view_defines(settings, fmt::format("PER_PIXEL_STEPS {}", settings.per_pixel_steps)))),
       transmittance_lut_(make_texture_2d(GL_RGBA32F, shared::kTransmittanceLutWidth,
                                          shared::kTransmittanceLutHeight)),
       multiple_scattering_lut_(
-          make_texture_2d(GL_RGBA32F, shared::kFieldParts * shared::kMultipleScatteringLutWidth,
+          make_texture_2d(GL_RGBA32F, hillaire::kFieldParts * shared::kMultipleScatteringLutWidth,
                           shared::kMultipleScatteringLutHeight)),
       ground_irradiance_lut_(make_texture_2d(GL_RGBA32F, shared::kMultipleScatteringLutWidth, 1)),
       forward_gain_lut_(
           make_texture_2d(GL_R32F, shared::kForwardGainLutWidth, shared::kForwardGainLutHeight)),
       sky_view_lut_(
           make_texture_2d(GL_RGBA16F, shared::kSkyViewLutWidth, shared::kSkyViewLutHeight)),
-      aerial_scattering_(make_texture_3d(GL_RGBA16F, shared::kAerialPerspectiveSize)),
-      aerial_transmittance_(make_texture_3d(GL_RGBA16F, shared::kAerialPerspectiveSize)),
+      aerial_scattering_(make_texture_3d(GL_RGBA16F, shared::kAerialPerspectiveSize,
+                                         shared::kAerialPerspectiveSize,
+                                         shared::kAerialPerspectiveSize)),
+      aerial_transmittance_(make_texture_3d(GL_RGBA16F, shared::kAerialPerspectiveSize,
+                                            shared::kAerialPerspectiveSize,
+                                            shared::kAerialPerspectiveSize)),
       block_(make_buffer(sizeof(AtmosphereBlock), nullptr)) {
-  static_assert(shared::kScatteringOrders == int(std::tuple_size_v<decltype(order_luts_)>),
+  static_assert(hillaire::kScatteringOrders == int(std::tuple_size_v<decltype(order_luts_)>),
                 "one table per order of scattering");
   const int w = shared::kMultipleScatteringLutWidth, h = shared::kMultipleScatteringLutHeight;
   for (Texture& order : order_luts_) {
-    order = make_texture_2d(GL_RGBA32F, shared::kFieldParts * w, h + 1);
+    order = make_texture_2d(GL_RGBA32F, hillaire::kFieldParts * w, h + 1);
   }
   // Zero until a frame fills them; with the paper's LUT the ground's sky
   // light and the moments stay zero.
@@ -139,9 +131,6 @@ HillaireTechnique::HillaireTechnique(Settings settings)
   glClearTexImage(multiple_scattering_lut_.id(), 0, GL_RGBA, GL_FLOAT, zero);
   // The sky-view LUT spans the full circle of azimuth: it wraps.
   glTextureParameteri(sky_view_lut_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
-  GLuint vao = 0;
-  glCreateVertexArrays(1, &vao);
-  empty_vao_ = VertexArray(vao);
 }
 
 void HillaireTechnique::update(const AtmosphereModel& model) {
@@ -257,11 +246,7 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   }
 
   timer.begin("sky");
-  glBindFramebuffer(GL_FRAMEBUFFER, frame.target_framebuffer);
-  glViewport(0, 0, frame.width, frame.height);
-  glDisable(GL_DEPTH_TEST);
-  glDisable(GL_BLEND);
-  sky_program_.use();
+  sky_pass_.begin(frame.target_framebuffer, frame.width, frame.height, sky_program_);
   glBindTextureUnit(0, frame.depth_texture);
   glBindTextureUnit(1, frame.surface_texture);
   glBindTextureUnit(4, sky_view_lut_.id());
@@ -278,8 +263,7 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
                      glm::value_ptr(glm::mat3(local)));
   glUniform1f(sky_program_.uniform("u_lut_weight"), float(lut_weight_));
   glUniform1f(sky_program_.uniform("u_aerial_range"), float(aerial_range_));
-  glBindVertexArray(empty_vao_.id());
-  glDrawArrays(GL_TRIANGLES, 0, 3);
+  sky_pass_.draw();
   timer.end();
 }
 

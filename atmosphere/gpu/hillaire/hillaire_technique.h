@@ -11,8 +11,9 @@
 // forward along the sun's path, past the table's degree (a
 // forward-gain LUT). See hillaire_functions.glsl for why.
 #include "atmosphere/gpu/technique.h"
-#include "render/gl/program.h"
-#include "render/gl/texture.h"
+#include "gl/fullscreen_pass.h"
+#include "gl/program.h"
+#include "gl/texture.h"
 
 #include <array>
 
@@ -88,7 +89,7 @@ class HillaireTechnique final : public AtmosphereTechnique {
       sky_view_lut_, aerial_scattering_, aerial_transmittance_;
   std::array<Texture, 6> order_luts_;  // kScatteringOrders
   Buffer block_;
-  VertexArray empty_vao_;
+  FullscreenPass sky_pass_;
   bool prepared_ = false;  // prepare() ran since the last render()
   double lut_weight_ = 1.0;
   double aerial_range_ = 0.0;

@@ -3,8 +3,9 @@
 // every sample, a second march toward the sun; single scattering only. The
 // brute-force baseline every other technique is compared against for speed.
 #include "atmosphere/gpu/technique.h"
-#include "render/gl/program.h"
-#include "render/gl/texture.h"
+#include "gl/fullscreen_pass.h"
+#include "gl/program.h"
+#include "gl/texture.h"
 
 namespace planet {
 
@@ -25,7 +26,7 @@ class RaymarchTechnique final : public AtmosphereTechnique {
   Steps steps_;
   Program program_;
   Buffer block_;
-  VertexArray empty_vao_;
+  FullscreenPass pass_;
 };
 
 }  // namespace planet

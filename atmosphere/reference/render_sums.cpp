@@ -1,0 +1,75 @@
+#include "atmosphere/reference/render_sums.h"
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+
+#include <fmt/format.h>
+
+#include <fstream>
+
+namespace planet {
+
+int64_t RenderSums::traced() const {
+  int64_t n = 0;
+  for (int d : done) n += d;
+  return n;
+}
+
+bool RenderSums::fits(const std::vector<int>& lane_paths) const {
+  if (done.size() != lane_paths.size()) return false;
+  for (size_t lane = 0; lane < done.size(); ++lane) {
+    if (done[lane] < 0 || done[lane] > lane_paths[lane]) return false;
+  }
+  return true;
+}
+
+namespace {
+
+constexpr const char* kSumsMagic = "planet reference sums 1";
+
+}  // namespace
+
+void write_sums(const std::filesystem::path& file, const std::string& view_key,
+                const RenderSums& sums) {
+  std::string header = fmt::format("{}\n{}\n{} {} {}\n", kSumsMagic, view_key, sums.width,
+                                   sums.height, sums.done.size());
+  for (size_t i = 0; i < sums.done.size(); ++i) {
+    header += fmt::format("{}{}", i ? " " : "", sums.done[i]);
+  }
+  header += "\n";
+  std::string bytes = header;
+  bytes.append(reinterpret_cast<const char*>(sums.sum.data()), sums.sum.size() * sizeof(double));
+  write_file_atomically(file, bytes);
+}
+
+std::optional<RenderSums> read_sums(const std::filesystem::path& file,
+                                    const std::string& view_key) {
+  std::ifstream in(file, std::ios::binary);
+  auto bad = [&](const std::string& what) {
+    return InputError(
+        fmt::format("{}: {} (delete it and the render starts from nothing)", file.string(), what));
+  };
+  std::string magic, key;
+  std::getline(in, magic);
+  std::getline(in, key);
+  if (!in || magic != kSumsMagic) throw bad("not the sums of a reference render");
+  if (key != view_key) return std::nullopt;
+  RenderSums sums;
+  size_t lanes = 0;
+  in >> sums.width >> sums.height >> lanes;
+  if (!in || sums.width < 1 || sums.height < 1 || lanes < 1 || lanes > 1024) {
+    throw bad("its size line is not 'width height lanes'");
+  }
+  sums.done.resize(lanes);
+  for (int& n : sums.done) in >> n;
+  if (!in || in.get() != '\n') throw bad("its paths line does not give one count per lane");
+  sums.sum.resize(size_t(sums.width) * size_t(sums.height) * lanes);
+  in.read(reinterpret_cast<char*>(sums.sum.data()),
+          std::streamsize(sums.sum.size() * sizeof(double)));
+  if (!in || in.peek() != std::char_traits<char>::eof()) {
+    throw bad(fmt::format("it should hold {} sums after its header", sums.sum.size()));
+  }
+  return sums;
+}
+
+}  // namespace planet

@@ -1,0 +1,18 @@
+// The sizes of the lookup tables, in texels, in one place: the techniques'
+// shaders and their C++ sides (atmosphere/math/shared_math.h) read them here.
+// Hillaire 2020 and Bruneton 2017 store the transmittance alike.
+const int kTransmittanceLutWidth = 256;
+const int kTransmittanceLutHeight = 64;
+// The multiple-scattering LUT: sun zenith (u) by altitude (v). Twilight
+// needs texels along mu_s, where the planet's shadow has a sharp edge: 5
+// deg after sunset the ground's sky light came out 6-12 % too high with 64
+// and within 3 % with 128 (the sky: 6.6 and 4.7 % worst channel). The
+// ground's sky-irradiance table has its width, over the same mu_s.
+const int kMultipleScatteringLutWidth = 128;
+const int kMultipleScatteringLutHeight = 32;
+// The forward-gain LUT: nu (u) by Mie scattering optical depth (v).
+const int kForwardGainLutWidth = 256;
+const int kForwardGainLutHeight = 64;
+const int kSkyViewLutWidth = 200;
+const int kSkyViewLutHeight = 100;
+const int kAerialPerspectiveSize = 32;

@@ -1,0 +1,52 @@
+#pragma once
+// Images in and out through OpenImageIO: linear radiance as EXR, tone-mapped
+// colour as PNG. Files are written under a temporary name and renamed, so
+// an interrupted write never leaves a file that looks finished.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace planet {
+
+struct ImageRGB {
+  int width = 0, height = 0;
+  std::vector<float> pixels;  // RGB, rows top-down
+};
+
+// GL's RGBA rows, bottom-up as a texture reads back, as RGB rows top-down:
+// the one place rows are flipped.
+template <typename T>
+std::vector<T> rgb_rows_from_gl(int width, int height, const std::vector<T>& rgba) {
+  std::vector<T> rgb(size_t(width) * size_t(height) * 3);
+  for (int y = 0; y < height; ++y) {
+    const T* src = rgba.data() + size_t(height - 1 - y) * size_t(width) * 4;
+    T* dst = rgb.data() + size_t(y) * size_t(width) * 3;
+    for (int x = 0; x < width; ++x) {
+      dst[3 * x + 0] = src[4 * x + 0];
+      dst[3 * x + 1] = src[4 * x + 1];
+      dst[3 * x + 2] = src[4 * x + 2];
+    }
+  }
+  return rgb;
+}
+
+inline ImageRGB image_from_gl(int width, int height, const std::vector<float>& rgba) {
+  return {width, height, rgb_rows_from_gl(width, height, rgba)};
+}
+
+// 32-bit float RGB EXR.
+void write_exr(const std::filesystem::path& file, const ImageRGB& image);
+// `rgba` holds width*height RGBA floats with rows bottom-up (GL order).
+void write_exr(const std::filesystem::path& file, int width, int height,
+               const std::vector<float>& rgba);
+// `rgb` holds width*height RGB8, rows top-down.
+void write_png_rgb8(const std::filesystem::path& file, int width, int height,
+                    const std::vector<uint8_t>& rgb);
+// `rgba` holds width*height RGBA8 with rows bottom-up (GL order).
+void write_png(const std::filesystem::path& file, int width, int height,
+               const std::vector<uint8_t>& rgba);
+
+ImageRGB read_image_rgb(const std::filesystem::path& file);
+
+}  // namespace planet

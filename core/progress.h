@@ -1,0 +1,33 @@
+#pragma once
+// Progress of a long job on stderr, with its rate and the time left: on a
+// terminal one line rewritten in place, in a log a line per tenth of the
+// work. Every wait longer than a second shows one.
+#include <chrono>
+#include <string>
+
+namespace planet {
+
+class Progress {
+ public:
+  // `label` names the job ("capture ascent"); `total` is its size in
+  // `unit`s ("frame": "frame 3/41  1.2 frames/s"), or with no unit a
+  // fraction shown in percent. Quiet prints nothing.
+  Progress(std::string label, double total, std::string unit = "", bool quiet = false);
+  ~Progress();
+  Progress(const Progress&) = delete;
+  Progress& operator=(const Progress&) = delete;
+
+  // `done` of the total so far.
+  void update(double done);
+  // Ends the line on a terminal; the last update should have been the total.
+  void finish();
+
+ private:
+  std::string label_, unit_;
+  double total_;
+  bool quiet_, terminal_, open_ = false;
+  int tenths_shown_ = -1;
+  std::chrono::steady_clock::time_point start_;
+};
+
+}  // namespace planet

@@ -1,0 +1,56 @@
+#include "gl/texture.h"
+
+#include "core/error.h"
+
+namespace planet {
+
+Texture make_texture_2d(GLenum internal_format, int width, int height) {
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &id);
+  glTextureStorage2D(id, 1, internal_format, width, height);
+  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return Texture(id);
+}
+
+Texture make_texture_3d(GLenum internal_format, int width, int height, int depth) {
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_3D, 1, &id);
+  glTextureStorage3D(id, 1, internal_format, width, height, depth);
+  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  glTextureParameteri(id, GL_TEXTURE_WRAP_R, GL_CLAMP_TO_EDGE);
+  return Texture(id);
+}
+
+Framebuffer make_framebuffer(GLuint color, GLuint depth) {
+  GLuint fbo = 0;
+  glCreateFramebuffers(1, &fbo);
+  glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, color, 0);
+  if (depth) glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, depth, 0);
+  if (glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+    glDeleteFramebuffers(1, &fbo);
+    throw SystemError("framebuffer incomplete");
+  }
+  return Framebuffer(fbo);
+}
+
+Buffer make_buffer(size_t bytes, const void* data, GLbitfield flags) {
+  GLuint id = 0;
+  glCreateBuffers(1, &id);
+  glNamedBufferStorage(id, GLsizeiptr(bytes), data, flags);
+  return Buffer(id);
+}
+
+std::vector<float> read_texture_rgba32f(GLuint texture, int width, int height) {
+  std::vector<float> pixels(size_t(width) * size_t(height) * 4);
+  glGetTextureImage(texture, 0, GL_RGBA, GL_FLOAT, GLsizei(pixels.size() * sizeof(float)),
+                    pixels.data());
+  return pixels;
+}
+
+}  // namespace planet

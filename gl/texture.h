@@ -1,0 +1,55 @@
+#pragma once
+// Small owning wrappers for GL objects, so that a thrown error never leaks
+// them and a moved-from object deletes nothing.
+#include <epoxy/gl.h>
+
+#include <utility>
+#include <vector>
+
+namespace planet {
+
+template <void (*Delete)(GLuint)>
+class GlName {
+ public:
+  GlName() = default;
+  explicit GlName(GLuint id) : id_(id) {}
+  ~GlName() {
+    if (id_) Delete(id_);
+  }
+  GlName(GlName&& o) noexcept : id_(std::exchange(o.id_, 0)) {}
+  GlName& operator=(GlName&& o) noexcept {
+    if (this != &o) {
+      if (id_) Delete(id_);
+      id_ = std::exchange(o.id_, 0);
+    }
+    return *this;
+  }
+  GLuint id() const { return id_; }
+
+ private:
+  GLuint id_ = 0;
+};
+
+inline void delete_texture(GLuint id) { glDeleteTextures(1, &id); }
+inline void delete_buffer(GLuint id) { glDeleteBuffers(1, &id); }
+inline void delete_framebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }
+inline void delete_vertex_array(GLuint id) { glDeleteVertexArrays(1, &id); }
+
+using Texture = GlName<delete_texture>;
+using Buffer = GlName<delete_buffer>;
+using Framebuffer = GlName<delete_framebuffer>;
+using VertexArray = GlName<delete_vertex_array>;
+
+// Immutable 2D and 3D textures with linear filtering and clamped edges.
+Texture make_texture_2d(GLenum internal_format, int width, int height);
+Texture make_texture_3d(GLenum internal_format, int width, int height, int depth);
+// A framebuffer of a colour texture and, unless 0, a depth texture;
+// SystemError when GL finds it incomplete.
+Framebuffer make_framebuffer(GLuint color, GLuint depth);
+// A buffer with immutable storage, optionally filled.
+Buffer make_buffer(size_t bytes, const void* data, GLbitfield flags = GL_DYNAMIC_STORAGE_BIT);
+
+// Reads a whole RGBA float texture (level 0) back to the CPU, rows bottom-up.
+std::vector<float> read_texture_rgba32f(GLuint texture, int width, int height);
+
+}  // namespace planet

@@ -1,0 +1,45 @@
+#include "gl/timer.h"
+
+#include <algorithm>
+
+namespace planet {
+
+GpuTimer::~GpuTimer() {
+  for (auto& p : pending_) free_.push_back(p.query);
+  if (!free_.empty()) glDeleteQueries(GLsizei(free_.size()), free_.data());
+}
+
+void GpuTimer::begin(const std::string& pass) {
+  GLuint q = 0;
+  if (free_.empty()) {
+    glCreateQueries(GL_TIME_ELAPSED, 1, &q);
+  } else {
+    q = free_.back();
+    free_.pop_back();
+  }
+  pending_.push_back({pass, q, std::chrono::steady_clock::now()});
+  glBeginQuery(GL_TIME_ELAPSED, q);
+}
+
+void GpuTimer::end() { glEndQuery(GL_TIME_ELAPSED); }
+
+std::vector<PassTiming> GpuTimer::collect() {
+  std::vector<PassTiming> out;
+  for (auto& p : pending_) {
+    GLuint64 ns = 0;
+    glGetQueryObjectui64v(p.query, GL_QUERY_RESULT, &ns);
+    // A pass cannot take longer than the wall time from its begin() to now.
+    // Mesa's llvmpipe reports the first draw-carrying query of a context as
+    // the time since an arbitrary epoch (about 15 minutes here); this
+    // bound turns that into an honest upper limit.
+    double wall_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - p.begun)
+            .count();
+    out.push_back({p.pass, std::min(double(ns) * 1e-6, wall_ms)});
+    free_.push_back(p.query);
+  }
+  pending_.clear();
+  return out;
+}
+
+}  // namespace planet

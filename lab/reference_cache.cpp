@@ -1,0 +1,201 @@
+#include "lab/reference_cache.h"
+
+#include "core/error.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <optional>
+#include <utility>
+
+namespace planet {
+
+std::filesystem::path reference_cache_dir() {
+  if (const char* dir = std::getenv("PLANET_CACHE_DIR"); dir && *dir) {
+    return std::filesystem::path(dir) / "reference";
+  }
+  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) {
+    return std::filesystem::path(xdg) / "planet" / "reference";
+  }
+  const char* home = std::getenv("HOME");
+  return std::filesystem::path(home && *home ? home : ".") / ".cache" / "planet" / "reference";
+}
+
+namespace {
+
+// FNV-1a over the bytes of every value that changes the pixels.
+class Hasher {
+ public:
+  void bytes(const void* data, size_t n) {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (size_t i = 0; i < n; ++i) h_ = (h_ ^ p[i]) * 0x100000001b3ull;
+  }
+  void number(double x) { bytes(&x, sizeof x); }
+  void vec(const glm::dvec3& v) { number(v.x), number(v.y), number(v.z); }
+  void text(const std::string& s) { bytes(s.data(), s.size()), number(double(s.size())); }
+  void profile(const DensityProfile& p) {
+    for (const auto& l : p.layers) {
+      number(l.width), number(l.exp_term), number(l.exp_scale), number(l.linear_term),
+          number(l.constant_term);
+    }
+  }
+  void list(const std::vector<double>& v) {
+    number(double(v.size()));
+    for (double x : v) number(x);
+  }
+  uint64_t value() const { return h_; }
+
+ private:
+  uint64_t h_ = 0xcbf29ce484222325ull;
+};
+
+}  // namespace
+
+namespace {
+
+// Everything but the tracer's version and the paths.
+void hash_view(Hasher& h, const Scene& scene, const AtmosphereModel& m, ReferenceMode mode) {
+  h.text(to_string(mode));
+  h.number(m.bottom_radius), h.number(m.top_radius), h.vec(m.wavelengths_nm),
+      h.vec(m.solar_irradiance), h.number(m.sun_angular_radius), h.number(m.mie_g),
+      h.number(m.ground_albedo);
+  for (const AtmosphereComponent* c : {&m.rayleigh, &m.mie, &m.absorber}) {
+    h.vec(c->scattering), h.vec(c->absorption), h.profile(c->density);
+  }
+  if (m.spectrum) {
+    const AtmosphereSpectrum& s = *m.spectrum;
+    for (const auto* v : {&s.wavelengths_nm, &s.solar_irradiance, &s.rayleigh_scattering,
+                          &s.mie_scattering, &s.mie_absorption, &s.absorber_absorption}) {
+      h.list(*v);
+    }
+  }
+  h.text(scene.name), h.text(scene.body);
+  h.vec(scene.camera.pos_body), h.vec(scene.sun_dir_body);
+  h.number(scene.camera.body_from_camera.w), h.number(scene.camera.body_from_camera.x),
+      h.number(scene.camera.body_from_camera.y), h.number(scene.camera.body_from_camera.z);
+  h.number(scene.camera.vertical_fov), h.number(scene.width), h.number(scene.height);
+  h.number(scene.projection == Projection::kPerspective ? 0 : 1);
+}
+
+}  // namespace
+
+std::string reference_key(const Scene& scene, const AtmosphereModel& m, const PathBudget& paths,
+                          ReferenceMode mode) {
+  Hasher h;
+  h.number(kReferenceVersion);
+  if (paths.per_channel.empty()) {
+    h.number(paths.spp);
+  } else {
+    h.text("per channel");
+    for (int n : paths.per_channel) h.number(n);
+  }
+  hash_view(h, scene, m, mode);
+  return fmt::format("{:016x}", h.value());
+}
+
+std::string reference_view_key(const Scene& scene, const AtmosphereModel& m, ReferenceMode mode) {
+  Hasher h;
+  h.number(kReferenceVersion);
+  h.text("any paths");
+  hash_view(h, scene, m, mode);
+  return fmt::format("{:016x}", h.value());
+}
+
+std::filesystem::path reference_cache_file(const Scene& scene, const AtmosphereModel& model,
+                                           const PathBudget& paths, ReferenceMode mode) {
+  return reference_cache_dir() / fmt::format("{}-{}x{}-{}spp-{}-{}.exr", scene.name, scene.width,
+                                             scene.height, paths.label(), to_string(mode),
+                                             reference_key(scene, model, paths, mode));
+}
+
+ImageRGB to_image_rgb(const ReferenceImage& image) {
+  ImageRGB out;
+  out.width = image.width;
+  out.height = image.height;
+  out.pixels = image.rgb;
+  return out;
+}
+
+std::filesystem::path reference_noise_file(const std::filesystem::path& reference_file) {
+  return std::filesystem::path(reference_file).replace_extension(".noise.exr");
+}
+
+std::filesystem::path reference_sums_file(const std::filesystem::path& reference_file) {
+  return std::filesystem::path(reference_file).replace_extension(".sums");
+}
+
+namespace {
+
+// The sums in the cache a render of this view and budget can go on from:
+// of the same view, with no more paths in any lane than the budget gives
+// it; of those, the one furthest along.
+std::optional<std::pair<std::filesystem::path, RenderSums>> find_start(
+    const Scene& scene, const std::string& view_key, ReferenceMode mode,
+    const std::vector<int>& lane_paths) {
+  std::optional<std::pair<std::filesystem::path, RenderSums>> best;
+  std::error_code ec;
+  std::string prefix = fmt::format("{}-{}x{}-", scene.name, scene.width, scene.height);
+  std::string mode_part = fmt::format("spp-{}-", to_string(mode));
+  for (const auto& entry : std::filesystem::directory_iterator(reference_cache_dir(), ec)) {
+    std::string name = entry.path().filename().string();
+    if (entry.path().extension() != ".sums" || name.rfind(prefix, 0) != 0 ||
+        name.find(mode_part) == std::string::npos) {
+      continue;
+    }
+    std::optional<RenderSums> sums = read_sums(entry.path(), view_key);
+    if (sums && sums->fits(lane_paths) && (!best || sums->traced() > best->second.traced())) {
+      best.emplace(entry.path(), std::move(*sums));
+    }
+  }
+  return best;
+}
+
+}  // namespace
+
+ReferenceRender reference_render(const Scene& scene, const PathBudget& paths, ReferenceMode mode,
+                                 const std::function<void(double)>& progress) {
+  Body body = scene_body(scene);
+  AtmosphereModel model = scene_atmosphere(scene, body);
+  std::filesystem::path file = reference_cache_file(scene, model, paths, mode);
+  std::filesystem::path noise_file = reference_noise_file(file);
+  if (std::filesystem::exists(file) && std::filesystem::exists(noise_file)) {
+    return {read_image_rgb(file), read_image_rgb(noise_file), {}, 0.0};
+  }
+  Medium medium = make_medium(model, mode);
+  std::vector<int> lane_paths = paths.lane_paths(medium.channels.size());
+  std::string view_key = reference_view_key(scene, model, mode);
+  std::filesystem::path sums_file = reference_sums_file(file);
+  std::filesystem::create_directories(file.parent_path());
+  ReferenceSettings settings;
+  settings.paths = paths;
+  settings.seed = scene.seed();
+  settings.progress = progress;
+  settings.checkpoint = [&](const RenderSums& sums) { write_sums(sums_file, view_key, sums); };
+  auto start = find_start(scene, view_key, mode, lane_paths);
+  double share = 0.0;
+  if (start) {
+    settings.start = &start->second;
+    double all = 0;
+    for (int n : lane_paths) all += n;
+    share = double(start->second.traced()) / all;
+  }
+  ReferenceImage image = render_reference(medium, reference_view(scene, body, model), settings);
+  ReferenceRender out{to_image_rgb(image),
+                      {image.width, image.height, image.noise},
+                      start ? start->first : std::filesystem::path(),
+                      share};
+  // The noise first: a reference in the cache always has its noise.
+  write_exr(noise_file, out.noise);
+  write_exr(file, out.image);
+  return out;
+}
+
+ImageRGB reference_image(const Scene& scene, const PathBudget& paths, ReferenceMode mode,
+                         const std::function<void(double)>& progress) {
+  return reference_render(scene, paths, mode, progress).image;
+}
+
+}  // namespace planet

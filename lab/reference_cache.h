@@ -1,0 +1,71 @@
+#pragma once
+// Reference images of the canonical scenes: rendered once by the path
+// tracer and kept as EXR in a cache, keyed by a hash of everything that
+// changes the pixels (the model as loaded, the scene, paths per pixel,
+// mode and the tracer's version), so a changed body file or a new tracer
+// never serves a stale image.
+//
+// The cache lives in $PLANET_CACHE_DIR/reference if set, otherwise in
+// $XDG_CACHE_HOME/planet/reference, otherwise ~/.cache/planet/reference.
+#include "atmosphere/reference/reference_render.h"
+#include "core/image_io.h"
+#include "lab/scene.h"
+
+#include <filesystem>
+#include <functional>
+#include <string>
+
+namespace planet {
+
+// Bumped whenever what the tracer converges to for the same inputs
+// changes. A change that only makes it faster, or moves its tables by less
+// than their own error (1e-5 in optical depth, tests/atmosphere/
+// path_tracer_test.cpp), keeps the cached renders: their bits differ, their
+// expectation does not.
+constexpr int kReferenceVersion = 5;
+
+std::filesystem::path reference_cache_dir();
+
+// 16 hex digits identifying (model, scene, paths, mode, kReferenceVersion).
+std::string reference_key(const Scene& scene, const AtmosphereModel& model, const PathBudget& paths,
+                          ReferenceMode mode);
+// 16 hex digits identifying (model, scene, mode, kReferenceVersion): the
+// renders of one view, whatever their paths.
+std::string reference_view_key(const Scene& scene, const AtmosphereModel& model,
+                               ReferenceMode mode);
+std::filesystem::path reference_cache_file(const Scene& scene, const AtmosphereModel& model,
+                                           const PathBudget& paths, ReferenceMode mode);
+
+// The standard error of each pixel of a cached reference (render/
+// path_tracer.h, kReplicates) sits beside it in this file.
+std::filesystem::path reference_noise_file(const std::filesystem::path& reference_file);
+
+// A render's running sums (path_tracer.h, RenderSums) sit beside it in
+// this file, written at every checkpoint and kept when it is done: a
+// render stopped part-way goes on from them, and a larger budget for the
+// same view starts from the sums of a smaller one.
+std::filesystem::path reference_sums_file(const std::filesystem::path& reference_file);
+
+struct ReferenceRender {
+  ImageRGB image;  // linear sRGB radiance, rows top-down
+  ImageRGB noise;  // its standard error per pixel and channel
+  // Where a render started: the sums it went on from (none when it started
+  // from nothing or came from the cache), and their share of its paths.
+  std::filesystem::path started_from;
+  double started_share = 0;
+};
+
+// The scene's reference and its noise: read from the cache, or rendered on
+// all cores (from the furthest sums there that fit) and cached. `progress`
+// sees the fraction done while rendering.
+ReferenceRender reference_render(const Scene& scene, const PathBudget& paths,
+                                 ReferenceMode mode = ReferenceMode::kRgb,
+                                 const std::function<void(double)>& progress = {});
+// The reference image alone.
+ImageRGB reference_image(const Scene& scene, const PathBudget& paths,
+                         ReferenceMode mode = ReferenceMode::kRgb,
+                         const std::function<void(double)>& progress = {});
+
+ImageRGB to_image_rgb(const ReferenceImage& image);
+
+}  // namespace planet

@@ -1,0 +1,176 @@
+#include "lab/scene.h"
+
+#include "atmosphere/atmosphere_space.h"
+#include "core/error.h"
+#include "sim/geodesy.h"
+
+#include <fmt/format.h>
+
+#include <glm/gtc/constants.hpp>
+#include <glm/gtx/matrix_operation.hpp>
+
+namespace planet {
+
+uint64_t Scene::seed() const {
+  // FNV-1a, 64 bit.
+  uint64_t h = 0xcbf29ce484222325ull;
+  for (unsigned char ch : name) h = (h ^ ch) * 0x100000001b3ull;
+  return h;
+}
+
+namespace {
+
+// Where a scene's camera stands and looks, and where the sun is, in the
+// local east-north-up frame of the point below the camera. Angles in degrees.
+struct Placement {
+  double lat_deg = 0, lon_deg = 0, height_m = 2.0;
+  double heading_deg = 0, pitch_deg = 0, vertical_fov_deg = 90;
+  double sun_elevation_deg = 0, sun_azimuth_deg = 0;  // azimuth clockwise from north
+};
+
+Scene make_scene(std::string name, std::string description, std::string body_name,
+                 const Placement& p, double exposure) {
+  Scene s;
+  s.name = std::move(name);
+  s.description = std::move(description);
+  s.body = std::move(body_name);
+  s.exposure = exposure;
+  Body body = load_body(find_body_file(s.body));
+  Geodesy geodesy(body.shape);
+  Geodetic place{glm::radians(p.lat_deg), glm::radians(p.lon_deg), p.height_m};
+  s.camera = geodesy.camera_at(place, glm::radians(p.heading_deg), glm::radians(p.pitch_deg),
+                               glm::radians(p.vertical_fov_deg));
+  s.sun_dir_body = glm::normalize(geodesy.body_direction(place, glm::radians(p.sun_elevation_deg),
+                                                         glm::radians(p.sun_azimuth_deg)));
+  return s;
+}
+
+}  // namespace
+
+std::vector<Scene> canonical_scenes() {
+  // Ground skies: a 90 degree vertical field (127 degrees across at 2:1)
+  // pitched up so that the horizon and most of the sky are in view.
+  Placement ground{45.0, 0.0, 2.0, 0.0, 35.0, 90.0, 60.0, 30.0};
+  std::vector<Scene> scenes;
+  scenes.push_back(make_scene("earth_noon", "Earth from the ground, sun 60 deg up, in view",
+                              "earth", ground, 10.0));
+  Placement sunset = ground;
+  sunset.pitch_deg = 30.0;
+  sunset.sun_elevation_deg = 2.0;
+  sunset.sun_azimuth_deg = 0.0;
+  scenes.push_back(make_scene("earth_sunset", "Earth from the ground, facing the sun 2 deg up",
+                              "earth", sunset, 20.0));
+  Placement twilight = sunset;
+  twilight.sun_elevation_deg = -5.0;
+  twilight.sun_azimuth_deg = 180.0;
+  scenes.push_back(make_scene("earth_twilight",
+                              "Earth from the ground, sun 5 deg below the horizon behind the "
+                              "camera: the planet's shadow on the eastern sky",
+                              "earth", twilight, 200.0));
+  // From 400 km the limb is 19.7 deg below the horizontal (cos = R / (R + h))
+  // and the atmosphere's top 17.4 deg: a narrow field shows the layer.
+  Placement orbit{0.0, 0.0, 400e3, 90.0, -18.5, 10.0, 20.0, 150.0};
+  scenes.push_back(make_scene("earth_400km", "Earth's limb from 400 km, sun to the right", "earth",
+                              orbit, 10.0));
+  Placement far{0.0, 0.0, 40000e3, 0.0, -90.0, 20.0, 30.0, 90.0};
+  scenes.push_back(make_scene("earth_40000km", "the whole Earth from 40 000 km, lit from the east",
+                              "earth", far, 10.0));
+  Placement mars = ground;
+  mars.lat_deg = 20.0;
+  scenes.push_back(
+      make_scene("mars_noon", "Mars from the ground, sun 60 deg up", "mars", mars, 10.0));
+  Placement mars_sunset = sunset;
+  mars_sunset.lat_deg = 20.0;
+  mars_sunset.pitch_deg = 20.0;
+  scenes.push_back(make_scene("mars_sunset", "Mars from the ground, facing the sun 2 deg up",
+                              "mars", mars_sunset, 20.0));
+  Placement rock = ground;
+  rock.sun_elevation_deg = 40.0;
+  scenes.push_back(make_scene("asteroid_surface", "the asteroid's sky from its surface", "asteroid",
+                              rock, 10.0));
+  Placement rock_space{0.0, 0.0, 70e3, 0.0, -90.0, 60.0, 30.0, 90.0};
+  scenes.push_back(make_scene("asteroid_space", "the asteroid and its atmosphere from 70 km",
+                              "asteroid", rock_space, 10.0));
+  // Variants of Earth noon that stress the techniques.
+  auto noon_variant = [&](const char* name, const char* description) {
+    Scene v = scenes[0];
+    v.name = name;
+    v.description = description;
+    return v;
+  };
+  Scene dense10 = noon_variant("earth_noon_dense10", "earth_noon with 10x the scattering");
+  dense10.scattering_scale = 10.0;
+  dense10.exposure = 5.0;
+  scenes.push_back(dense10);
+  Scene dense50 = noon_variant("earth_noon_dense50", "earth_noon with 50x the scattering");
+  dense50.scattering_scale = 50.0;
+  dense50.exposure = 5.0;
+  scenes.push_back(dense50);
+  Scene forward = noon_variant("earth_noon_g095", "earth_noon with Mie asymmetry g = 0.95");
+  forward.mie_g = 0.95;
+  scenes.push_back(forward);
+  return scenes;
+}
+
+Scene find_scene(const std::string& name) {
+  std::string known;
+  for (const Scene& s : canonical_scenes()) {
+    if (s.name == name) return s;
+    known += (known.empty() ? "" : ", ") + s.name;
+  }
+  throw InputError(fmt::format("'{}' is not a canonical scene ({})", name, known));
+}
+
+Body scene_body(const Scene& scene) {
+  Body body = load_body(find_body_file(scene.body));
+  // The ground truth's ground is the smooth bottom sphere, Lambertian with
+  // the model's albedo. So that a technique is judged on its sky and not on
+  // the terrain, the frame draws the same ground: the body's relief and
+  // palette give way to a smooth surface of that one grey (terrain/'s
+  // schema: no noise layers, every palette colour the same).
+  if (body.has_atmosphere() && body.atmosphere.contains("ground_albedo")) {
+    double a = body.atmosphere["ground_albedo"].get<double>();
+    nlohmann::json grey = {a, a, a};
+    body.terrain = {
+        {"max_level", 12},
+        {"height", {{"type", "procedural"}, {"layers", nlohmann::json::array()}}},
+        {"albedo",
+         {{"low", grey}, {"high", grey}, {"steep", grey}, {"snow", grey}, {"ocean", grey}}},
+    };
+  }
+  return body;
+}
+
+AtmosphereModel scene_atmosphere(const Scene& scene, const Body& body) {
+  if (!body.has_atmosphere()) {
+    throw InputError(
+        fmt::format("{}: scene {}: the body has no atmosphere", body.file.string(), scene.name));
+  }
+  AtmosphereModel model = load_atmosphere(body);
+  if (scene.scattering_scale != 1.0) model = with_scattering_scaled(model, scene.scattering_scale);
+  if (scene.mie_g) model.mie_g = *scene.mie_g;
+  return model;
+}
+
+ReferenceView reference_view(const Scene& scene, const Body& body, const AtmosphereModel& model) {
+  ReferenceView view;
+  view.width = scene.width;
+  view.height = scene.height;
+  view.projection = scene.projection;
+  glm::dvec3 scale = atmosphere_scale(body.shape, model.bottom_radius);
+  view.camera_atmo = scale * scene.camera.pos_body;
+  view.sun_dir_atmo = glm::normalize(scale * scene.sun_dir_body);
+  // The frame's own rays, pixel for pixel.
+  view.ray_from_ndc =
+      atmo_ray_from_ndc(scale, scene.camera, double(scene.width) / double(scene.height));
+  // Equirectangular: the local east-north-up frame, carried into
+  // atmosphere space and made orthonormal again.
+  glm::dvec3 up = glm::normalize(view.camera_atmo);
+  glm::dvec3 north_pole(0, 0, 1);
+  glm::dvec3 east = glm::cross(north_pole, up);
+  east = glm::length(east) > 1e-9 ? glm::normalize(east) : glm::dvec3(1, 0, 0);
+  view.frame = glm::dmat3(east, glm::cross(up, east), up);
+  return view;
+}
+
+}  // namespace planet

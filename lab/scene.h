@@ -1,0 +1,53 @@
+#pragma once
+// The canonical scenes: fixed views that the ground truth and every GPU
+// technique render, so that accuracy is always measured on the same pixels.
+// A scene is a body (with an optional variant of its atmosphere), a camera
+// as FrameRenderer takes it (pose in the body frame, vertical field of
+// view, -z forward, +y up), a sun direction and an image size.
+#include "atmosphere/model.h"
+#include "atmosphere/reference/reference_render.h"
+#include "sim/body.h"
+#include "sim/camera.h"
+
+#include <glm/glm.hpp>
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace planet {
+
+struct Scene {
+  std::string name;
+  std::string description;
+  std::string body;  // a body name (data/planets/<body>.json) or file
+  // Variants of the body's atmosphere: scattering multiplied (dense air)
+  // and a replaced Mie asymmetry (strong forward scattering).
+  double scattering_scale = 1.0;
+  std::optional<double> mie_g;
+  Camera camera;
+  glm::dvec3 sun_dir_body{0.0, 0.0, 1.0};
+  int width = 128, height = 64;
+  Projection projection = Projection::kPerspective;
+  double exposure = 10.0;  // a tone-mapping exposure that shows the scene well
+
+  // Seeds the path tracer's random streams: a hash of the name.
+  uint64_t seed() const;
+};
+
+// Every canonical scene, at its default size (128x64).
+std::vector<Scene> canonical_scenes();
+// A canonical scene by name; InputError naming the known ones otherwise.
+Scene find_scene(const std::string& name);
+
+// What a scene renders: its body, and the body's atmosphere with the
+// scene's variant applied. InputError for an airless body.
+Body scene_body(const Scene& scene);
+AtmosphereModel scene_atmosphere(const Scene& scene, const Body& body);
+
+// The scene's camera in atmosphere space, ray for ray the one FrameRenderer
+// builds (render/frame.cpp), for the path tracer.
+ReferenceView reference_view(const Scene& scene, const Body& body, const AtmosphereModel& model);
+
+}  // namespace planet

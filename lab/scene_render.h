@@ -1,0 +1,16 @@
+#pragma once
+// A canonical scene drawn by a GPU technique through the frame, for the
+// comparisons against its ground truth.
+#include "core/image_io.h"
+#include "lab/scene.h"
+
+#include <string>
+
+namespace planet {
+
+// The scene through FrameRenderer with the named technique, at the scene's
+// size: linear radiance, rows top-down like the reference. Needs a current
+// GL context.
+ImageRGB render_scene_with(const Scene& scene, const std::string& technique);
+
+}  // namespace planet
