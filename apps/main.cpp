@@ -2,6 +2,7 @@
 // itself (apps/commands.h) and does its work in its callback; every error
 // is caught here once and printed as one line.
 #include "apps/commands.h"
+#include "atmosphere/gpu/registry.h"
 #include "core/error.h"
 
 #include <unistd.h>
@@ -15,6 +16,8 @@ static void report(const std::exception& e) {
 int main(int argc, char** argv) {
   CLI::App app{"planet: a planetary flight and space simulator"};
   app.require_subcommand(1);
+  // The techniques with their quality parameters, under --help.
+  app.footer(planet::describe_techniques());
   planet::apps::add_capture_command(app);
   planet::apps::add_bench_command(app);
   planet::apps::add_accuracy_command(app);
@@ -22,6 +25,7 @@ int main(int argc, char** argv) {
   CLI::App& probe = planet::apps::add_probe_command(app);
   planet::apps::add_probe_atmosphere_commands(probe);
   planet::apps::add_fly_command(app);
+  planet::apps::add_techniques_command(app);
   planet::apps::add_probe_sun_command(probe);
   planet::apps::add_probe_ground_command(probe);
 

@@ -1,6 +1,6 @@
 #include "lab/scene_render.h"
 
-#include "atmosphere/gpu/technique.h"
+#include "atmosphere/gpu/registry.h"
 #include "render/frame.h"
 
 namespace planet {

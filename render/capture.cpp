@@ -1,6 +1,6 @@
 #include "render/capture.h"
 
-#include "atmosphere/gpu/technique.h"
+#include "atmosphere/gpu/registry.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/image_io.h"
@@ -66,6 +66,14 @@ nlohmann::json sidecar(const FlightScript& script, const FlightPath& path, const
 
 }  // namespace
 
+TechniqueChoice script_technique(const FlightScript& script) {
+  try {
+    return parse_technique(script.technique);
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("{}: technique: {}", script.file.string(), e.what()));
+  }
+}
+
 CaptureResult run_capture(const FlightScript& script, const CaptureOptions& options) {
   const int total = script.frame_count();
   const int first = options.first_frame;
@@ -78,11 +86,7 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
   std::unique_ptr<AtmosphereTechnique> technique;
   if (script.body.has_atmosphere()) {
     atmosphere = load_atmosphere(script.body);
-    try {
-      technique = make_technique(script.technique);
-    } catch (const InputError& e) {
-      throw InputError(fmt::format("{}: technique: {}", script.file.string(), e.what()));
-    }
+    technique = make_technique(script_technique(script));
   }
   std::filesystem::create_directories(options.out_dir);
   const auto finished_marker = options.out_dir / "capture.json";

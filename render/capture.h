@@ -4,6 +4,7 @@
 // is reproducible: the same script gives the same bytes on the same
 // machine. capture.json, written last, marks a finished capture; it is
 // removed first, so a capture that stops half-way never looks finished.
+#include "atmosphere/gpu/registry.h"
 #include "sim/flight_script.h"
 
 #include <filesystem>
@@ -33,6 +34,10 @@ class CaptureInterrupted : public std::runtime_error {
  public:
   using std::runtime_error::runtime_error;
 };
+
+// The script's atmosphere technique and quality, checked against the
+// registry without GL: InputError naming the script.
+TechniqueChoice script_technique(const FlightScript& script);
 
 // Needs a current GL context. Each frame's sidecar JSON is written after its
 // images, so a frame with a sidecar is complete.

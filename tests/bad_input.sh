@@ -25,7 +25,18 @@ expect "--time: 'noon'" "$planet" probe sun --lat 0 --lon 0 --time noon
 expect "vulcan" "$planet" probe sun --planet vulcan --lat 0 --lon 0 --time 2026-06-21T12:00:00Z
 expect "--lat: 91" "$planet" fly --lat 91
 expect "--height: -7000000 m is inside" "$planet" fly --height -7e6
-expect "--technique: 'nope'" "$planet" fly --technique nope
+expect "--technique: unknown atmosphere technique 'nope'" "$planet" fly --technique nope
+expect "hillaire has no quality parameter 'foo' (its parameters: sky_view_steps," \
+  "$planet" fly --technique hillaire:foo=1
+expect "raymarch: view_steps=0 is outside 1 to 512" "$planet" fly --technique raymarch:view_steps=0
+expect "raymarch: light_steps=2.5 is not a whole number" "$planet" fly --technique raymarch:light_steps=2.5
+expect "hillaire: path=sideways is not one of by_altitude, luts, per_pixel" \
+  "$planet" fly --technique hillaire:path=sideways
+expect "hillaire: 'per_pixel_steps' is not key=value" "$planet" fly --technique hillaire:per_pixel_steps
+sed 's/"technique": "hillaire"/"technique": "hillaire:per_pixel_steps=2"/' "$flights/ascent.json" > "$work/steps.json"
+expect "steps.json: technique: hillaire: per_pixel_steps=2 is outside 4 to 256" \
+  "$planet" capture --flight "$work/steps.json" --out "$work/s" --quiet
+[ -e "$work/s" ] && { echo "FAIL: a capture with a bad technique left its folder"; failed=1; }
 expect "vulcan" "$planet" fly --planet vulcan
 expect "--time: 'yesterday'" "$planet" fly --time yesterday
 expect "never reaches latitude" "$planet" fly --lat 60 --height 400000 --orbit-inclination 30 --time 2026-01-01T00:00:00Z

@@ -1,7 +1,7 @@
 // Sky techniques at 1280x720 on the Earth ground view, GPU time per frame
 // from timer queries (manual time), so that ratios between techniques are
 // measured in one run.
-#include "atmosphere/gpu/technique.h"
+#include "atmosphere/gpu/registry.h"
 #include "core/data_paths.h"
 #include "gl/context.h"
 #include "render/frame.h"

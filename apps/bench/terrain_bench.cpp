@@ -1,7 +1,7 @@
 // Terrain: LOD selection CPU time, tile generation per core, and frame
 // time of terrain + sky at 1280x720 on Earth from the ground, 10 km and
 // 400 km (GPU time from timer queries, tiles all resident first).
-#include "atmosphere/gpu/technique.h"
+#include "atmosphere/gpu/registry.h"
 #include "core/data_paths.h"
 #include "gl/context.h"
 #include "render/frame.h"

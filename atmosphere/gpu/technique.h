@@ -2,7 +2,8 @@
 // The one interface every GPU atmosphere technique implements (raymarch,
 // hillaire, bruneton, oneil). A frame calls update() when the model
 // changes, then render() to put sky, sun and aerial perspective over the
-// opaque surfaces; the comparisons loop over techniques through it.
+// opaque surfaces; the comparisons loop over techniques through it. The
+// techniques and their quality parameters are listed in registry.h.
 #include "atmosphere/model.h"
 
 #include <epoxy/gl.h>
@@ -58,10 +59,5 @@ class AtmosphereTechnique {
   // the terrain then estimates its own.
   virtual GLuint ground_irradiance() const { return 0; }
 };
-
-// Names accepted on the command line and in flight scripts.
-std::vector<std::string> technique_names();
-// Throws InputError for an unknown name. Needs a current GL context.
-std::unique_ptr<AtmosphereTechnique> make_technique(const std::string& name);
 
 }  // namespace planet

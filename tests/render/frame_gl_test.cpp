@@ -1,4 +1,5 @@
 // Frames rendered headless and checked for what a person must see in them.
+#include "atmosphere/gpu/registry.h"
 #include "render/frame.h"
 
 #include "core/data_paths.h"

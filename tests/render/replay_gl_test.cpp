@@ -1,5 +1,6 @@
 // A flight flown by hand, recorded, and replayed from its script renders
 // the same frames, byte for byte.
+#include "atmosphere/gpu/registry.h"
 #include "render/frame.h"
 
 #include "core/data_paths.h"

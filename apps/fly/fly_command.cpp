@@ -1,0 +1,111 @@
+// planet fly: a window onto a body, flown with mouse and keyboard, with a
+// HUD to change body, atmosphere technique, time and exposure. The options
+// and their checks are here; the flight is fly_session.h.
+#include "apps/commands.h"
+#include "apps/fly/fly_hud.h"
+#include "apps/fly/fly_input.h"
+#include "apps/fly/fly_session.h"
+#include "atmosphere/gpu/registry.h"
+#include "core/error.h"
+#include "gl/context.h"
+#include "sim/kepler.h"
+#include "sim/orbit_flight.h"
+
+#include <fmt/format.h>
+
+#include <chrono>
+#include <cstdio>
+#include <memory>
+
+namespace planet::apps {
+
+namespace {
+
+void run(const FlyArgs& args) {
+  // Fail on bad input before a window opens.
+  if (!(args.render_scale > 0.05 && args.render_scale <= 2.0)) {
+    throw InputError(fmt::format("--render-scale: {} is not within 0.05 to 2", args.render_scale));
+  }
+  if (!args.flight_file.empty()) load_flight_script(args.flight_file);
+  if (!(args.lat_deg >= -90.0 && args.lat_deg <= 90.0)) {
+    throw InputError(fmt::format("--lat: {} is not a latitude (-90 to 90 deg)", args.lat_deg));
+  }
+  if (!(args.lon_deg >= -180.0 && args.lon_deg <= 360.0)) {
+    throw InputError(fmt::format("--lon: {} is not a longitude (-180 to 360 deg)", args.lon_deg));
+  }
+  if (args.orbit_inclination_deg > 180.0) {
+    throw InputError("--orbit-inclination: must be 0 to 180 deg");
+  }
+  parse_utc(args.time, "--time");
+  Body body = load_body(find_body_file(args.planet));
+  if (args.height_m < 0) {
+    throw InputError(fmt::format("--height: {} m is inside {}", args.height_m, body.name));
+  }
+  try {
+    parse_technique(args.technique);
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("--technique: {}", e.what()));
+  }
+  if (args.orbit_inclination_deg >= 0) {
+    Geodetic place{glm::radians(args.lat_deg), glm::radians(args.lon_deg), args.height_m};
+    try {
+      circular_orbit_over(body, place, glm::radians(args.orbit_inclination_deg), true,
+                          parse_utc(args.time, "--time"));
+    } catch (const InputError& e) {
+      throw InputError(fmt::format("--orbit-inclination: {}", e.what()));
+    }
+  }
+  ContextOptions options;
+  options.width = args.width;
+  options.height = args.height;
+  options.title = "planet fly";
+  auto context = GlContext::create_window(options);
+  FlyInput input(context->window());  // first: the HUD's backend chains to its callback
+  Hud hud(context->window());
+  FlySession session(args, context->window(), input, hud);
+  auto last = std::chrono::steady_clock::now();
+  for (;;) {
+    auto now = std::chrono::steady_clock::now();
+    double dt = std::chrono::duration<double>(now - last).count();
+    last = now;
+    if (!session.frame(dt)) break;
+  }
+}
+
+}  // namespace
+
+void add_fly_command(CLI::App& app) {
+  auto args = std::make_shared<FlyArgs>();
+  CLI::App* cmd = app.add_subcommand("fly", "Fly over a body in a window (mouse, keyboard, HUD)");
+  cmd->add_option("--planet", args->planet, "Body name or file")->capture_default_str();
+  cmd->add_option("--lat", args->lat_deg, "Start latitude, degrees")->capture_default_str();
+  cmd->add_option("--lon", args->lon_deg, "Start longitude, degrees")->capture_default_str();
+  cmd->add_option("--height", args->height_m, "Start height above the surface, metres")
+      ->capture_default_str();
+  cmd->add_option("--heading", args->heading_deg, "Start heading, degrees from north")
+      ->capture_default_str();
+  cmd->add_option("--orbit-inclination", args->orbit_inclination_deg,
+                  "Start in a circular orbit at --height with this inclination, degrees");
+  cmd->add_option("--time", args->time, "Start time, UTC")->capture_default_str();
+  cmd->add_option("--technique", args->technique, "Atmosphere technique")->capture_default_str();
+  cmd->add_option("--exposure", args->exposure, "Exposure")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  cmd->add_option(
+      "--size",
+      [args](const CLI::results_t& r) {
+        return std::sscanf(r[0].c_str(), "%dx%d", &args->width, &args->height) == 2 &&
+               args->width > 0 && args->height > 0;
+      },
+      "Window size WxH (960x540)");
+  cmd->add_option("--flight", args->flight_file,
+                  "Fly a flight script (data/flights/*.json) as capture would; ends with it");
+  cmd->add_option("--render-scale", args->render_scale,
+                  "Rendered size relative to the window (0.5 halves it; screenshots are this size)")
+      ->capture_default_str();
+  cmd->add_option("--out", args->out_dir, "Folder for screenshots and recorded flights")
+      ->capture_default_str();
+  cmd->callback([args] { run(*args); });
+}
+
+}  // namespace planet::apps

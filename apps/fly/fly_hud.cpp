@@ -1,0 +1,93 @@
+#include "apps/fly/fly_hud.h"
+
+#include <GLFW/glfw3.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+#include <imgui.h>
+
+#include <array>
+#include <cmath>
+
+namespace planet::apps {
+
+namespace {
+
+const std::array<double, 6> kTimeScales = {0.0, 1.0, 10.0, 100.0, 1000.0, 10000.0};
+const char* kTimeScaleNames[] = {"pause", "x1", "x10", "x100", "x1000", "x10000"};
+
+}  // namespace
+
+Hud::Hud(GLFWwindow* window) {
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 450");
+}
+
+Hud::~Hud() {
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+}
+
+bool Hud::has_keyboard() const { return ImGui::GetIO().WantCaptureKeyboard; }
+bool Hud::has_mouse() const { return ImGui::GetIO().WantCaptureMouse; }
+
+HudChanges Hud::draw(const HudView& v) {
+  HudChanges changes;
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+  ImGui::Begin("planet");
+  ImGui::Text("height %.1f m  speed %.2f m/s  lat %.4f  lon %.4f  sun %.1f deg", v.height_m,
+              v.speed_m_s, v.lat_deg, v.lon_deg, v.sun_elevation_deg);
+  ImGui::Text("frame %.1f ms  gpu ms:%s", v.frame_ms, v.passes.c_str());
+  ImGui::Text("%s  UTC %s%s", v.body_name.c_str(), v.utc.c_str(),
+              v.recording ? "  [recording]" : "");
+  if (ImGui::BeginCombo("body (B)", v.body.c_str())) {
+    for (const auto& b : v.bodies) {
+      if (ImGui::Selectable(b.c_str(), b == v.body)) changes.body = b;
+    }
+    ImGui::EndCombo();
+  }
+  if (ImGui::BeginCombo("technique (T)", v.technique.c_str())) {
+    for (const auto& t : v.techniques) {
+      if (ImGui::Selectable(t.c_str(), t == v.technique)) changes.technique = t;
+    }
+    ImGui::EndCombo();
+  }
+  // Not while recording or flying a script: the clock must run on
+  // without jumps.
+  ImGui::BeginDisabled(v.clock_locked);
+  float hours = float(v.hours_utc);
+  if (ImGui::SliderFloat("time of day (UTC h)", &hours, 0.0f, 24.0f, "%.2f")) {
+    changes.hours_utc = double(hours);
+  }
+  ImGui::EndDisabled();
+  int scale_index = 0;
+  for (size_t i = 0; i < kTimeScales.size(); ++i) {
+    if (v.time_scale == kTimeScales[i]) scale_index = int(i);
+  }
+  if (ImGui::Combo("time scale (P pauses)", &scale_index, kTimeScaleNames,
+                   int(kTimeScales.size()))) {
+    changes.time_scale = kTimeScales[size_t(scale_index)];
+  }
+  float log_exposure = float(std::log10(v.exposure));
+  if (ImGui::SliderFloat("exposure (log10)", &log_exposure, -3.0f, 3.0f, "%.2f")) {
+    changes.exposure = std::pow(10.0, double(log_exposure));
+  }
+  float lod = v.lod_pixels;
+  if (ImGui::SliderFloat("terrain LOD pixel budget", &lod, 0.25f, 8.0f, "%.2f px")) {
+    changes.lod_pixels = lod;
+  }
+  ImGui::TextUnformatted("WASD move, R/F up/down, arrows or drag turn, Q/E roll, Shift x10");
+  ImGui::TextUnformatted("F12 screenshot, F9 record/stop, Esc quit");
+  ImGui::End();
+  ImGui::Render();
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  return changes;
+}
+
+}  // namespace planet::apps

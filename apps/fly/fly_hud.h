@@ -1,0 +1,49 @@
+#pragma once
+// The HUD over the view (Dear ImGui): what the pilot needs to read, and the
+// settings the pilot may change. It shows a HudView and returns what the
+// pilot changed this frame; the session applies it.
+#include <optional>
+#include <string>
+#include <vector>
+
+struct GLFWwindow;
+
+namespace planet::apps {
+
+struct HudView {
+  double height_m = 0, speed_m_s = 0, lat_deg = 0, lon_deg = 0, sun_elevation_deg = 0;
+  double frame_ms = 0;
+  std::string passes;  // "pass ms pass ms ..."
+  std::string body_name, utc;
+  bool recording = false;
+  bool clock_locked = false;  // recording or scripted: the clock runs on
+  std::vector<std::string> bodies, techniques;
+  std::string body, technique;
+  double hours_utc = 0;  // within the current UTC day
+  double time_scale = 1;
+  double exposure = 1;
+  float lod_pixels = 1;
+};
+
+struct HudChanges {
+  std::optional<std::string> body, technique;
+  std::optional<double> hours_utc, time_scale, exposure;
+  std::optional<float> lod_pixels;
+};
+
+class Hud {
+ public:
+  // After FlyInput: the backend chains to the key callback it finds.
+  explicit Hud(GLFWwindow* window);
+  ~Hud();
+  Hud(const Hud&) = delete;
+  Hud& operator=(const Hud&) = delete;
+
+  HudChanges draw(const HudView& view);
+  // Whether the HUD has the keyboard or the mouse (a field or a slider
+  // being used): the pilot's controls leave them alone.
+  bool has_keyboard() const;
+  bool has_mouse() const;
+};
+
+}  // namespace planet::apps

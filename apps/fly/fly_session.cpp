@@ -1,0 +1,250 @@
+#include "apps/fly/fly_session.h"
+
+#include "atmosphere/gpu/registry.h"
+#include "core/image_io.h"
+#include "gl/context.h"
+#include "sim/free_flight.h"
+#include "sim/geodesy.h"
+#include "sim/orbit_flight.h"
+#include "sim/sun_ephemeris.h"
+
+#include <GLFW/glfw3.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+
+namespace planet::apps {
+
+namespace {
+
+constexpr double kStep = 1.0 / 120.0;  // fixed simulation step, seconds
+constexpr double kRecordRate = 10.0;   // recorded keyframes (= capture frames) per second
+const std::array<const char*, 3> kBodies = {"earth", "mars", "asteroid"};
+
+}  // namespace
+
+FlySession::FlySession(const FlyArgs& args, GLFWwindow* window, FlyInput& input, Hud& hud)
+    : args_(args),
+      window_(window),
+      input_(input),
+      hud_(hud),
+      clock_(parse_utc(args.time, "--time")),
+      step_(kStep),
+      exposure_(args.exposure),
+      technique_(args.technique) {
+  parse_technique(technique_);
+  renderer_ = std::make_unique<FrameRenderer>(std::max(1, int(args.width * args.render_scale)),
+                                              std::max(1, int(args.height * args.render_scale)));
+  ldr_framebuffer_ = make_framebuffer(renderer_->ldr_texture(), 0);
+  // A window never waits for tiles: it draws parents while children load.
+  renderer_->set_terrain_wait(0.0);
+  if (!args.flight_file.empty()) {
+    FlightScript script = load_flight_script(args.flight_file);
+    technique_ = script.technique;
+    exposure_ = script.exposure;
+    load(script.body.file.string(), false);
+    auto scripted = std::make_unique<ScriptedFlight>(std::move(script));
+    scripted_ = scripted.get();
+    controller_ = std::move(scripted);
+  } else {
+    load(args.planet, true);
+  }
+}
+
+bool FlySession::frame(double real_dt) {
+  glfwPollEvents();
+  if (glfwWindowShouldClose(window_)) return false;
+  for (int key : input_.take_presses(hud_.has_keyboard())) handle_key(key);
+  FlightInput input = input_.read(hud_.has_keyboard(), hud_.has_mouse());
+  // Up to half a second of steps per frame: the simulation keeps real time
+  // on a slow renderer, and a stall (a window drag) is dropped.
+  for (int i = step_.advance(real_dt, 60); i > 0; --i) {
+    // The clock runs at its scale; the pilot flies in real time (a paused
+    // or fast clock changes the sun, not the controls).
+    clock_.advance(kStep);
+    controller_->step(kStep, clock_.utc(), input);
+    if (scripted_) {
+      if (scripted_->finished()) glfwSetWindowShouldClose(window_, GLFW_TRUE);
+      exposure_ = scripted_->exposure();
+      clock_.set(scripted_->utc());
+    }
+    ++steps_;
+    if (recorder_ && steps_ % int(std::lround(1.0 / (kStep * kRecordRate))) == 0) {
+      recorder_->add(camera(), clock_.elapsed(), exposure_);
+    }
+  }
+  Camera cam = camera();
+  glm::dvec3 sun = sun_dir();
+  stats_ = renderer_->render(cam, sun, exposure_);
+  blit();
+  apply(hud_.draw(hud_view(cam, sun, real_dt)));
+  glfwSwapBuffers(window_);
+  check_gl_errors("fly frame");
+  return true;
+}
+
+Camera FlySession::camera() const {
+  Camera c = controller_->camera();
+  c.vertical_fov = glm::radians(args_.vertical_fov_deg);
+  return c;
+}
+
+glm::dvec3 FlySession::sun_dir() const {
+  if (scripted_) return scripted_->sun_dir_body();
+  if (!body_.ephemeris.available()) return glm::dvec3(0, 0, 1);
+  return sun_dir_body(body_.ephemeris, body_.rotation, clock_.utc());
+}
+
+// Gives the renderer the body with its atmosphere drawn by the current
+// technique.
+void FlySession::attach(const Body& body) {
+  std::optional<AtmosphereModel> atmosphere;
+  std::unique_ptr<AtmosphereTechnique> technique;
+  if (body.has_atmosphere()) {
+    atmosphere = load_atmosphere(body);
+    technique = make_technique(technique_);
+  }
+  // A new body builds a new terrain, which takes the budget now set.
+  TerrainOptions terrain;
+  terrain.pixel_budget = double(lod_pixels_);
+  renderer_->set_terrain_options(terrain);
+  renderer_->set_body(body, atmosphere, std::move(technique));
+}
+
+// A new body: the pilot starts over the start place (a few km up unless it
+// came from the command line).
+void FlySession::load(const std::string& name, bool from_args) {
+  // A recording holds one body: it ends where the body changes.
+  if (recorder_) toggle_recording();
+  Body body = load_body(find_body_file(name));
+  attach(body);
+  body_ = body;
+  body_key_ = name;
+  Geodetic place{glm::radians(args_.lat_deg), glm::radians(args_.lon_deg), args_.height_m};
+  if (!from_args) place.height = std::max(2.0, 1e-3 * body.shape.equatorial_radius);
+  scripted_ = nullptr;
+  if (from_args && args_.orbit_inclination_deg >= 0) {
+    KeplerOrbit orbit = circular_orbit_over(body, place, glm::radians(args_.orbit_inclination_deg),
+                                            true, clock_.utc());
+    controller_ = std::make_unique<OrbitFlight>(body, orbit, clock_.utc());
+  } else {
+    controller_ = std::make_unique<FreeFlight>(body, place, glm::radians(args_.heading_deg));
+  }
+  std::printf("body: %s\n", body.name.c_str());
+  std::fflush(stdout);
+}
+
+// A new technique: same body, same place.
+void FlySession::set_technique(const std::string& name) {
+  technique_ = name;
+  attach(body_);
+  std::printf("technique: %s\n", name.c_str());
+  std::fflush(stdout);
+}
+
+void FlySession::handle_key(int key) {
+  if (key == GLFW_KEY_ESCAPE) glfwSetWindowShouldClose(window_, GLFW_TRUE);
+  if (key == GLFW_KEY_B) {
+    size_t i = 0;
+    while (i < kBodies.size() && body_key_ != kBodies[i]) ++i;
+    load(kBodies[(i + 1) % kBodies.size()], false);
+  }
+  if (key == GLFW_KEY_T) {
+    auto names = technique_names();
+    auto it = std::find(names.begin(), names.end(), parse_technique(technique_).name);
+    size_t i = it == names.end() ? 0 : size_t(it - names.begin());
+    set_technique(names[(i + 1) % names.size()]);
+  }
+  if (key == GLFW_KEY_F12) screenshot();
+  if (key == GLFW_KEY_F9) toggle_recording();
+  if (key == GLFW_KEY_P) clock_.set_scale(clock_.scale() > 0 ? 0.0 : 1.0);
+}
+
+HudView FlySession::hud_view(const Camera& cam, const glm::dvec3& sun, double real_dt) const {
+  HudView v;
+  Geodesy geodesy(body_.shape);
+  Geodetic g = geodesy.geodetic_from_body(cam.pos_body);
+  HorizonAngles sun_angles = horizon_angles(sun, g.lat, g.lon);
+  v.height_m = g.height;
+  v.speed_m_s = controller_->speed();
+  v.lat_deg = glm::degrees(g.lat);
+  v.lon_deg = glm::degrees(g.lon);
+  v.sun_elevation_deg = glm::degrees(sun_angles.elevation);
+  v.frame_ms = real_dt * 1e3;
+  for (const auto& p : stats_.passes) v.passes += fmt::format(" {} {:.2f}", p.pass, p.gpu_ms);
+  v.body_name = body_.name;
+  v.utc = format_utc(clock_.utc());
+  v.recording = recorder_ != nullptr;
+  v.clock_locked = recorder_ != nullptr || scripted_ != nullptr;
+  v.bodies.assign(kBodies.begin(), kBodies.end());
+  v.techniques = technique_names();
+  v.body = body_key_;
+  v.technique = technique_;
+  double day_start = std::floor((clock_.utc() + 43200.0) / 86400.0) * 86400.0 - 43200.0;
+  v.hours_utc = (clock_.utc() - day_start) / 3600.0;
+  v.time_scale = clock_.scale();
+  v.exposure = exposure_;
+  v.lod_pixels = lod_pixels_;
+  return v;
+}
+
+void FlySession::apply(const HudChanges& c) {
+  if (c.body) load(*c.body, false);
+  if (c.technique) set_technique(*c.technique);
+  if (c.hours_utc) {
+    // Time of day: moves the clock within the current UTC day.
+    double day_start = std::floor((clock_.utc() + 43200.0) / 86400.0) * 86400.0 - 43200.0;
+    clock_.set(day_start + *c.hours_utc * 3600.0);
+  }
+  if (c.time_scale) clock_.set_scale(*c.time_scale);
+  if (c.exposure) exposure_ = *c.exposure;
+  if (c.lod_pixels) {
+    lod_pixels_ = *c.lod_pixels;
+    if (renderer_->terrain()) renderer_->terrain()->set_pixel_budget(double(lod_pixels_));
+  }
+}
+
+void FlySession::blit() {
+  int w, h;
+  glfwGetFramebufferSize(window_, &w, &h);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, w, h);
+  glBlitNamedFramebuffer(ldr_framebuffer_.id(), 0, 0, 0, renderer_->width(), renderer_->height(), 0,
+                         0, w, h, GL_COLOR_BUFFER_BIT, GL_LINEAR);
+}
+
+void FlySession::screenshot() {
+  std::filesystem::create_directories(args_.out_dir);
+  std::string stem = fmt::format("screenshot_{:04d}", screenshots_++);
+  auto base = std::filesystem::path(args_.out_dir) / stem;
+  write_exr(base.string() + ".exr", renderer_->width(), renderer_->height(), renderer_->read_hdr());
+  write_png(base.string() + ".png", renderer_->width(), renderer_->height(), renderer_->read_ldr());
+  std::printf("screenshot: %s.png and .exr\n", base.string().c_str());
+  std::fflush(stdout);
+}
+
+void FlySession::toggle_recording() {
+  if (!recorder_) {
+    clock_.rebase_to_millisecond();
+    steps_ = 0;
+    recorder_ = std::make_unique<FlightRecorder>(body_key_, technique_, renderer_->width(),
+                                                 renderer_->height(), args_.vertical_fov_deg,
+                                                 kRecordRate, clock_.epoch());
+    recorder_->add(camera(), clock_.elapsed(), exposure_);
+    std::printf("recording\n");
+  } else {
+    std::filesystem::create_directories(args_.out_dir);
+    auto file =
+        std::filesystem::path(args_.out_dir) / fmt::format("flight_{:04d}.json", flights_++);
+    recorder_->write(file);
+    std::printf("recorded %d frames into %s (replay: planet capture --flight %s)\n",
+                recorder_->frames(), file.string().c_str(), file.string().c_str());
+    recorder_.reset();
+  }
+  std::fflush(stdout);
+}
+
+}  // namespace planet::apps

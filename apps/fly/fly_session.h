@@ -1,0 +1,73 @@
+#pragma once
+// One flight in a window: the body and its atmosphere technique, the
+// pilot's controller (free flight, an orbit or a script), the simulation
+// clock in fixed steps, the renderer, recording and screenshots.
+#include "apps/fly/fly_hud.h"
+#include "apps/fly/fly_input.h"
+#include "gl/texture.h"
+#include "render/frame.h"
+#include "sim/body.h"
+#include "sim/flight_controller.h"
+#include "sim/flight_recorder.h"
+#include "sim/scripted_flight.h"
+#include "sim/utc_time.h"
+
+#include <memory>
+#include <string>
+
+struct GLFWwindow;
+
+namespace planet::apps {
+
+struct FlyArgs {
+  std::string planet = "earth", technique = "raymarch", time = "2026-06-21T10:00:00Z";
+  double lat_deg = 46.55, lon_deg = 7.98, height_m = 2.0, heading_deg = 90.0;
+  double orbit_inclination_deg = -1;
+  int width = 960, height = 540;
+  double render_scale = 0.5;  // of the window; llvmpipe is slow at full size
+  double exposure = 8.0, vertical_fov_deg = 60.0;
+  std::string out_dir = ".";
+  std::string flight_file;  // fly a script instead of the start place
+};
+
+class FlySession {
+ public:
+  FlySession(const FlyArgs& args, GLFWwindow* window, FlyInput& input, Hud& hud);
+
+  // One frame of the program: input, fixed steps, render, HUD. False to quit.
+  bool frame(double real_dt);
+
+ private:
+  Camera camera() const;
+  glm::dvec3 sun_dir() const;
+  void attach(const Body& body);
+  void load(const std::string& name, bool from_args);
+  void set_technique(const std::string& name);
+  void handle_key(int key);
+  void apply(const HudChanges& changes);
+  HudView hud_view(const Camera& cam, const glm::dvec3& sun, double real_dt) const;
+  void blit();
+  void screenshot();
+  void toggle_recording();
+
+  FlyArgs args_;
+  GLFWwindow* window_;
+  FlyInput& input_;
+  Hud& hud_;
+  SimClock clock_;
+  FixedStep step_;
+  double exposure_;
+  std::string technique_, body_key_;
+  Body body_;
+  std::unique_ptr<FrameRenderer> renderer_;
+  Framebuffer ldr_framebuffer_;  // the renderer's tone-mapped target, to blit from
+  std::unique_ptr<FlightController> controller_;
+  ScriptedFlight* scripted_ = nullptr;  // the controller, when flying a script
+  std::unique_ptr<FlightRecorder> recorder_;
+  FrameStats stats_;
+  long steps_ = 0;
+  int screenshots_ = 0, flights_ = 0;
+  float lod_pixels_ = 1.0f;
+};
+
+}  // namespace planet::apps

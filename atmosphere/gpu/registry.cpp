@@ -1,0 +1,217 @@
+#include "atmosphere/gpu/registry.h"
+
+#include "atmosphere/gpu/hillaire/hillaire_technique.h"
+#include "atmosphere/gpu/raymarch/raymarch_technique.h"
+#include "core/error.h"
+
+#include <fmt/format.h>
+#include <fmt/ranges.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <ranges>
+
+namespace planet {
+
+namespace {
+
+std::vector<QualityParameter> hillaire_quality() {
+  return {
+      {"sky_view_steps", "march steps per texel of the sky-view LUT", 4, 128, 30, true, {}},
+      {"per_pixel_steps",
+       "march steps per pixel high up, in space and beyond the froxels",
+       4,
+       256,
+       40,
+       true,
+       {}},
+      {"aerial_substeps",
+       "march steps per slice of the aerial-perspective froxels",
+       1,
+       16,
+       2,
+       true,
+       {}},
+      {"aerial_range_km", "distance the froxels cover near the ground, km", 1, 1000, 32, false, {}},
+      {"path", "which path draws the frame", 0, 2, 0, true, {"by_altitude", "luts", "per_pixel"}},
+  };
+}
+
+std::unique_ptr<AtmosphereTechnique> make_hillaire(const TechniqueChoice& c,
+                                                   HillaireTechnique::MultipleScattering ms) {
+  HillaireTechnique::Settings s;
+  s.multiple_scattering = ms;
+  s.sky_view_steps = c.integer("sky_view_steps");
+  s.per_pixel_steps = c.integer("per_pixel_steps");
+  s.aerial_substeps = c.integer("aerial_substeps");
+  s.aerial_range = c.value("aerial_range_km") * 1e3;
+  s.path = HillaireTechnique::Path(c.integer("path"));
+  return std::make_unique<HillaireTechnique>(s);
+}
+
+const std::vector<std::pair<std::string, std::string>> kHillaireQualityPoints = {
+    {"cheap", "sky_view_steps=12,per_pixel_steps=12,aerial_substeps=1"},
+    {"default", ""},
+    {"fine", "sky_view_steps=64,per_pixel_steps=96,aerial_substeps=4"},
+};
+
+std::vector<TechniqueEntry> make_registry() {
+  return {
+      {"raymarch",
+       "Nishita et al. 1993",
+       "single scattering by a nested ray march per pixel: the brute-force baseline",
+       {{"view_steps", "march steps along each pixel's ray", 1, 512, 32, true, {}},
+        {"light_steps", "march steps toward the sun at each of them", 1, 256, 16, true, {}}},
+       {{"cheap", "view_steps=8,light_steps=4"},
+        {"default", ""},
+        {"fine", "view_steps=128,light_steps=64"}},
+       [](const TechniqueChoice& c) {
+         return std::make_unique<RaymarchTechnique>(
+             RaymarchTechnique::Steps{c.integer("view_steps"), c.integer("light_steps")});
+       }},
+      {"hillaire", "ours, on Hillaire 2020's tables",
+       "transmittance, multiple-scattering (six orders to spherical-harmonic degree 4 and a "
+       "forward-gain LUT), sky-view and aerial-perspective LUTs; a per-pixel march high up",
+       hillaire_quality(), kHillaireQualityPoints,
+       [](const TechniqueChoice& c) {
+         return make_hillaire(c, HillaireTechnique::MultipleScattering::kOrders);
+       }},
+      {"hillaire2020", "Hillaire 2020",
+       "the paper's LUTs, with its multiple scattering Psi = L2 / (1 - f_ms)", hillaire_quality(),
+       kHillaireQualityPoints,
+       [](const TechniqueChoice& c) {
+         return make_hillaire(c, HillaireTechnique::MultipleScattering::kPaper);
+       }},
+  };
+}
+
+std::string format_value(const QualityParameter& p, double v) {
+  if (!p.choices.empty()) return p.choices[size_t(v)];
+  return fmt::format("{:g}", v);
+}
+
+// One key=value of a technique's text, checked against its parameter.
+double parse_value(const TechniqueEntry& t, const QualityParameter& p, const std::string& text) {
+  if (!p.choices.empty()) {
+    auto it = std::find(p.choices.begin(), p.choices.end(), text);
+    if (it == p.choices.end()) {
+      throw InputError(fmt::format("{}: {}={} is not one of {}", t.name, p.key, text,
+                                   fmt::join(p.choices, ", ")));
+    }
+    return double(it - p.choices.begin());
+  }
+  char* end = nullptr;
+  double v = text.empty() ? NAN : std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(v)) {
+    throw InputError(fmt::format("{}: {}={} is not a number", t.name, p.key, text));
+  }
+  if (p.integer && v != std::floor(v)) {
+    throw InputError(fmt::format("{}: {}={} is not a whole number", t.name, p.key, text));
+  }
+  if (v < p.min || v > p.max) {
+    throw InputError(
+        fmt::format("{}: {}={} is outside {:g} to {:g}", t.name, p.key, text, p.min, p.max));
+  }
+  return v;
+}
+
+}  // namespace
+
+const std::vector<TechniqueEntry>& technique_registry() {
+  static const std::vector<TechniqueEntry> registry = make_registry();
+  return registry;
+}
+
+std::vector<std::string> technique_names() {
+  std::vector<std::string> names;
+  for (const auto& t : technique_registry()) names.push_back(t.name);
+  return names;
+}
+
+const TechniqueEntry& technique_entry(const std::string& name) {
+  for (const auto& t : technique_registry()) {
+    if (t.name == name) return t;
+  }
+  throw InputError(fmt::format("unknown atmosphere technique '{}' (available: {})", name,
+                               fmt::join(technique_names(), ", ")));
+}
+
+double TechniqueChoice::value(const std::string& key) const {
+  for (const auto& [k, v] : values) {
+    if (k == key) return v;
+  }
+  throw InputError(fmt::format("{}: no quality parameter '{}'", name, key));
+}
+
+std::string TechniqueChoice::text() const {
+  const TechniqueEntry& t = technique_entry(name);
+  std::string out;
+  for (size_t i = 0; i < t.quality.size(); ++i) {
+    const QualityParameter& p = t.quality[i];
+    if (values[i].second == p.default_value) continue;
+    out +=
+        fmt::format("{}{}={}", out.empty() ? ":" : ",", p.key, format_value(p, values[i].second));
+  }
+  return name + out;
+}
+
+TechniqueChoice parse_technique(const std::string& text) {
+  size_t colon = text.find(':');
+  const TechniqueEntry& t = technique_entry(text.substr(0, colon));
+  TechniqueChoice choice{t.name, {}};
+  for (const auto& p : t.quality) choice.values.emplace_back(p.key, p.default_value);
+  if (colon == std::string::npos) return choice;
+  std::string rest = text.substr(colon + 1);
+  size_t at = 0;
+  while (true) {
+    size_t comma = rest.find(',', at);
+    std::string item = rest.substr(at, comma == std::string::npos ? std::string::npos : comma - at);
+    size_t eq = item.find('=');
+    if (eq == std::string::npos || eq == 0) {
+      throw InputError(fmt::format("{}: '{}' is not key=value (its keys: {})", t.name, item,
+                                   fmt::join(choice.values | std::views::keys, ", ")));
+    }
+    std::string key = item.substr(0, eq);
+    auto it = std::find_if(t.quality.begin(), t.quality.end(),
+                           [&](const QualityParameter& p) { return p.key == key; });
+    if (it == t.quality.end()) {
+      throw InputError(fmt::format("{} has no quality parameter '{}' (its parameters: {})", t.name,
+                                   key, fmt::join(choice.values | std::views::keys, ", ")));
+    }
+    choice.values[size_t(it - t.quality.begin())].second = parse_value(t, *it, item.substr(eq + 1));
+    if (comma == std::string::npos) break;
+    at = comma + 1;
+  }
+  return choice;
+}
+
+std::unique_ptr<AtmosphereTechnique> make_technique(const TechniqueChoice& choice) {
+  return technique_entry(choice.name).make(choice);
+}
+
+std::unique_ptr<AtmosphereTechnique> make_technique(const std::string& text) {
+  return make_technique(parse_technique(text));
+}
+
+std::string describe_techniques() {
+  std::string out =
+      "Atmosphere techniques: pick one as NAME or NAME:KEY=VALUE,... (e.g. "
+      "hillaire:per_pixel_steps=20) on the command line or in a flight script's \"technique\".\n";
+  for (const auto& t : technique_registry()) {
+    out += fmt::format("\n{} ({}): {}\n", t.name, t.source, t.summary);
+    for (const auto& p : t.quality) {
+      std::string range = p.choices.empty() ? fmt::format("{}{:g} to {:g}",
+                                                          p.integer ? "whole, " : "", p.min, p.max)
+                                            : fmt::format("{}", fmt::join(p.choices, " | "));
+      out += fmt::format("  {:<17} {:<31} default {:<12} {}\n", p.key, range,
+                         format_value(p, p.default_value), p.description);
+    }
+    std::vector<std::string> points;
+    for (const auto& [name, settings] : t.quality_points) points.push_back(name);
+    out += fmt::format("  quality points for the lab: {}\n", fmt::join(points, ", "));
+  }
+  return out;
+}
+
+}  // namespace planet
