@@ -1,0 +1,44 @@
+#!/usr/bin/env bash
+# The program runs outside its source tree: `cmake --install` into a fresh
+# prefix, then `planet capture` from there with the source tree hidden (a
+# private mount namespace puts an empty tmpfs over it) gives the same bytes
+# as the build tree's program, and `planet techniques` and `planet probe`
+# work there too.
+#   install_outside_tree.sh BUILD_DIR SOURCE_DIR FLIGHT
+set -euo pipefail
+build="$1"; source="$2"; flight="$3"
+unset PLANET_ROOT
+work="$(mktemp -d /tmp/planet-install.XXXXXX)"
+trap 'rm -rf "$work"' EXIT
+
+if ! unshare -rm true 2>/dev/null; then
+  echo "SKIP: this machine gives no private mount namespace (unshare -rm), so the source tree cannot be hidden"
+  exit 77
+fi
+
+cmake --install "$build" --prefix "$work/prefix" > "$work/install.log"
+cp "$flight" "$work/flight.json"
+"$build/planet" capture --flight "$work/flight.json" --out "$work/from_build" --quiet
+
+# Hidden: the source tree (and the build tree inside it) is an empty folder.
+unshare -rm bash -c '
+  set -euo pipefail
+  mount -t tmpfs none "$1"
+  [ -z "$(ls -A "$1")" ] || { echo "FAIL: the source tree is still visible"; exit 1; }
+  "$2/prefix/bin/planet" capture --flight "$2/flight.json" --out "$2/from_install" --quiet
+  "$2/prefix/bin/planet" techniques > "$2/techniques.txt"
+  "$2/prefix/bin/planet" probe transmittance --planet mars --height 0 --zenith 30 > "$2/probe.txt"
+' hide "$source" "$work"
+
+count=0
+for f in "$work"/from_build/frame_*.exr "$work"/from_build/frame_*.png; do
+  name="$(basename "$f")"
+  cmp -s "$f" "$work/from_install/$name" ||
+    { echo "FAIL: $name differs between the build tree's program and the installed one"; exit 1; }
+  count=$((count + 1))
+done
+[ "$count" -ge 6 ] || { echo "FAIL: only $count frames"; exit 1; }
+[ -f "$work/from_install/capture.json" ] || { echo "FAIL: the installed capture did not finish"; exit 1; }
+grep -q "^hillaire " "$work/techniques.txt" || { echo "FAIL: planet techniques lists no hillaire"; exit 1; }
+grep -q "transmittance" "$work/probe.txt" || { echo "FAIL: probe printed nothing"; exit 1; }
+echo "the installed program, with the source tree hidden, captured $count files byte-identical to the build tree's"
