@@ -39,6 +39,16 @@ Framebuffer make_framebuffer(GLuint color, GLuint depth) {
   return Framebuffer(fbo);
 }
 
+void begin_reversed_z(GLuint framebuffer, int width, int height, const float clear_color[4]) {
+  glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
+  glViewport(0, 0, width, height);
+  const float far_depth = 0.0f;
+  glClearNamedFramebufferfv(framebuffer, GL_COLOR, 0, clear_color);
+  glClearNamedFramebufferfv(framebuffer, GL_DEPTH, 0, &far_depth);
+  glEnable(GL_DEPTH_TEST);
+  glDepthFunc(GL_GREATER);
+}
+
 Buffer make_buffer(size_t bytes, const void* data, GLbitfield flags) {
   GLuint id = 0;
   glCreateBuffers(1, &id);

@@ -46,6 +46,10 @@ Texture make_texture_3d(GLenum internal_format, int width, int height, int depth
 // A framebuffer of a colour texture and, unless 0, a depth texture;
 // SystemError when GL finds it incomplete.
 Framebuffer make_framebuffer(GLuint color, GLuint depth);
+// Binds the framebuffer and its viewport, clears its colour and its depth
+// to the far plane of reversed Z (0), and tests depth as reversed Z wants
+// it (nearer is greater): how every pass of opaque surfaces begins.
+void begin_reversed_z(GLuint framebuffer, int width, int height, const float clear_color[4]);
 // A buffer with immutable storage, optionally filled.
 Buffer make_buffer(size_t bytes, const void* data, GLbitfield flags = GL_DYNAMIC_STORAGE_BIT);
 

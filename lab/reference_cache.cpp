@@ -1,6 +1,7 @@
 #include "lab/reference_cache.h"
 
 #include "core/error.h"
+#include "core/hash.h"
 
 #include <fmt/format.h>
 
@@ -27,12 +28,8 @@ std::filesystem::path reference_cache_dir() {
 namespace {
 
 // FNV-1a over the bytes of every value that changes the pixels.
-class Hasher {
+class Hasher : public Fnv1a {
  public:
-  void bytes(const void* data, size_t n) {
-    const auto* p = static_cast<const unsigned char*>(data);
-    for (size_t i = 0; i < n; ++i) h_ = (h_ ^ p[i]) * 0x100000001b3ull;
-  }
   void number(double x) { bytes(&x, sizeof x); }
   void vec(const glm::dvec3& v) { number(v.x), number(v.y), number(v.z); }
   void text(const std::string& s) { bytes(s.data(), s.size()), number(double(s.size())); }
@@ -46,10 +43,6 @@ class Hasher {
     number(double(v.size()));
     for (double x : v) number(x);
   }
-  uint64_t value() const { return h_; }
-
- private:
-  uint64_t h_ = 0xcbf29ce484222325ull;
 };
 
 }  // namespace

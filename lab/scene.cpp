@@ -2,6 +2,7 @@
 
 #include "atmosphere/atmosphere_space.h"
 #include "core/error.h"
+#include "core/hash.h"
 #include "sim/geodesy.h"
 
 #include <fmt/format.h>
@@ -11,12 +12,7 @@
 
 namespace planet {
 
-uint64_t Scene::seed() const {
-  // FNV-1a, 64 bit.
-  uint64_t h = 0xcbf29ce484222325ull;
-  for (unsigned char ch : name) h = (h ^ ch) * 0x100000001b3ull;
-  return h;
-}
+uint64_t Scene::seed() const { return fnv1a(name); }
 
 namespace {
 

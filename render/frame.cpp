@@ -54,14 +54,8 @@ void FrameRenderer::set_body(const Body& body, std::optional<AtmosphereModel> at
 }
 
 void FrameRenderer::draw_surfaces(const Camera& camera, const glm::dvec3& sun_dir_body) {
-  glBindFramebuffer(GL_FRAMEBUFFER, surface_fbo_.id());
-  glViewport(0, 0, width_, height_);
   const float black[4] = {0, 0, 0, 0};
-  const float far_depth = 0.0f;
-  glClearNamedFramebufferfv(surface_fbo_.id(), GL_COLOR, 0, black);
-  glClearNamedFramebufferfv(surface_fbo_.id(), GL_DEPTH, 0, &far_depth);
-  glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_GREATER);
+  begin_reversed_z(surface_fbo_.id(), width_, height_, black);
   TerrainLighting lighting;
   lighting.sun_dir_body = sun_dir_body;
   lighting.has_atmosphere = atmosphere_.has_value();

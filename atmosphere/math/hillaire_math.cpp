@@ -45,7 +45,9 @@ Real mie_column_lookup(IN(Atmosphere) atmosphere, Real r, Real mu);
 // clang-format off
 #include "atmosphere/shaders/sunlight.glsl"
 #include "atmosphere/shaders/ground.glsl"
+#include "atmosphere/shaders/hillaire_luts.glsl"
 #include "atmosphere/shaders/hillaire_functions.glsl"
+#include "atmosphere/shaders/hillaire_orders.glsl"
 // clang-format on
 
 Real3 scattering_order_lookup(Real u, Real v, int part) {

@@ -1,9 +1,11 @@
 // Hillaire 2020, "A Scalable and Production Ready Sky and Atmosphere
-// Rendering Technique": the LUT mappings and the scattering integrals, in
-// the common subset of GLSL and C++-with-GLM (see definitions.glsl). The
-// shaders of atmosphere/gpu/hillaire (hillaire_common.glsl) and its CPU
-// side (atmosphere/math/hillaire_math.cpp) compile this same file, after
-// the shared math, hillaire_definitions.glsl, sunlight.glsl and ground.glsl.
+// Rendering Technique": the scattering integrals along a ray, in the common
+// subset of GLSL and C++-with-GLM (see definitions.glsl). The shaders of
+// atmosphere/gpu/hillaire (hillaire_common.glsl) and its CPU side
+// (atmosphere/math/hillaire_math.cpp) compile this same file, after the
+// shared math, hillaire_definitions.glsl, sunlight.glsl, ground.glsl and
+// hillaire_luts.glsl; hillaire_orders.glsl, the multiple-scattering LUT's
+// texels, comes after it.
 //
 // The including side declares, before including this file and those two
 // (and defines anywhere):
@@ -21,86 +23,10 @@
 //       the Mie density integrated from radius r to the top along zenith
 //       cosine mu, in metres (mie_column_to_top)
 //   Real forward_gain_lookup(IN(Atmosphere), Real nu, Real tau)
-//       forward_gain_times_extinction (see "The sun's glow past the second
-//       moment"), or zero where a technique leaves the gain out
+//       forward_gain_times_extinction (see "The sun's glow past the
+//       table's degree"), or zero where a technique leaves the gain out
 // On the GPU these sample the LUTs; on the CPU they integrate directly or
 // read tables.
-
-// --- Multiple-scattering LUT (Hillaire 2020, sec. 5.5) ------------------------
-// Psi_ms depends on altitude and sun zenith only: y = altitude / thickness
-// and x = sky_irradiance_u_from_mu_s(mu_s), both texel-centred. The paper
-// maps mu_s linearly; the square root packs texels around the terminator,
-// where the light at a point changes fastest: with 32 linear texels the
-// twilight sky's higher orders moved by half between 32 and 128 texels.
-void multiple_scattering_lut_uv_from_r_mu_s(IN(Atmosphere) atmosphere, Real r, Real mu_s,
-                                            OUT(Real) u, OUT(Real) v) {
-  Real x_r = (r - atmosphere.bottom_radius) / (atmosphere.top_radius - atmosphere.bottom_radius);
-  u = texture_coord_from_unit_range(sky_irradiance_u_from_mu_s(mu_s), Real(kMultipleScatteringLutWidth));
-  v = texture_coord_from_unit_range(clamp(x_r, Real(0.0), Real(1.0)), Real(kMultipleScatteringLutHeight));
-}
-
-void multiple_scattering_lut_r_mu_s_from_uv(IN(Atmosphere) atmosphere, Real u, Real v,
-                                            OUT(Real) r, OUT(Real) mu_s) {
-  Real x_mu_s = clamp(unit_range_from_texture_coord(u, Real(kMultipleScatteringLutWidth)), Real(0.0), Real(1.0));
-  Real x_r = clamp(unit_range_from_texture_coord(v, Real(kMultipleScatteringLutHeight)), Real(0.0), Real(1.0));
-  mu_s = mu_s_from_sky_irradiance_u(x_mu_s);
-  r = atmosphere.bottom_radius + x_r * (atmosphere.top_radius - atmosphere.bottom_radius);
-}
-
-// The ground-irradiance table: one row over mu_s, the same mapping.
-Real ground_irradiance_lut_u_from_mu_s(Real mu_s) {
-  return texture_coord_from_unit_range(sky_irradiance_u_from_mu_s(mu_s), Real(kMultipleScatteringLutWidth));
-}
-
-// --- Sky-view LUT (Hillaire 2020, sec. 5.3, extended to the full azimuth) ----
-// The view zenith angle of the true horizon seen from r is pi - beta with
-// cos(beta) = sqrt(r^2 - R^2) / r. The upper half of the texture holds the
-// sky, the lower half the ground, each with a square law that packs texels
-// at the horizon (v = 1/2), where the sky changes fastest. Azimuth phi is
-// measured from the sun's azimuth over the full circle (-pi, pi], with a
-// square law that packs texels toward the sun for the Mie peak; the
-// texture wraps in u, so that no seam shows behind the viewer and a second
-// light can use the same table.
-Real sky_view_horizon_zenith(IN(Atmosphere) atmosphere, Real r) {
-  Real cos_beta = safe_sqrt(r * r - atmosphere.bottom_radius * atmosphere.bottom_radius) / r;
-  return kPi - acos(clamp(cos_beta, Real(0.0), Real(1.0)));
-}
-
-void sky_view_lut_uv_from_view(IN(Atmosphere) atmosphere, Real r, Real mu, Real phi, OUT(Real) u,
-                               OUT(Real) v) {
-  Real theta_h = sky_view_horizon_zenith(atmosphere, r);
-  Real theta = acos(clamp_cosine(mu));
-  if (theta < theta_h) {
-    v = Real(0.5) - Real(0.5) * safe_sqrt(Real(1.0) - theta / theta_h);
-  } else {
-    Real beta = kPi - theta_h;
-    v = Real(0.5) + Real(0.5) * safe_sqrt((theta - theta_h) / max(beta, Real(1e-6)));
-  }
-  Real s = sign(phi) * safe_sqrt(abs(phi) / kPi);
-  u = Real(0.5) + Real(0.5) * s;
-}
-
-void sky_view_lut_view_from_uv(IN(Atmosphere) atmosphere, Real r, Real u, Real v, OUT(Real) mu,
-                               OUT(Real) phi) {
-  Real theta_h = sky_view_horizon_zenith(atmosphere, r);
-  Real theta;
-  if (v < Real(0.5)) {
-    Real a = Real(1.0) - Real(2.0) * v;
-    theta = theta_h * (Real(1.0) - a * a);
-  } else {
-    Real a = Real(2.0) * v - Real(1.0);
-    theta = theta_h + (kPi - theta_h) * a * a;
-  }
-  mu = cos(theta);
-  Real s = Real(2.0) * u - Real(1.0);
-  phi = kPi * s * abs(s);
-}
-
-// --- Aerial-perspective froxels (Hillaire 2020, sec. 5.4) ---------------------
-// Slice k's centre lies at distance range * ((k + 1/2) / N)^2 along the
-// pixel's ray: slices are thin near the camera, where the eye sees detail.
-Real aerial_slice_distance(Real range, Real w) { return range * w * w; }
-Real aerial_slice_coord(Real range, Real t) { return sqrt(max(t, Real(0.0)) / range); }
 
 // --- Scattering along a ray ---------------------------------------------------
 // (1 - exp(-x)) / x, stable at x -> 0 where float loses 1 - exp(-x).
@@ -216,21 +142,6 @@ Real mie_column_to_top(IN(Atmosphere) atmosphere, Real r, Real mu, int steps) {
   return sum * (length_to_top / Real(steps));
 }
 
-// The LUT's mapping: u = sin(theta / 2) (theta the angle from the sun),
-// which keeps texels where the peak is; v = tau / (tau + 2), which covers
-// every depth, fine where the gain grows fastest. Both texel-centred.
-void forward_gain_lut_uv_from_nu_tau(Real nu, Real tau, OUT(Real) u, OUT(Real) v) {
-  u = texture_coord_from_unit_range(safe_sqrt(Real(0.5) * (Real(1.0) - nu)), Real(kForwardGainLutWidth));
-  Real t = max(tau, Real(0.0));
-  v = texture_coord_from_unit_range(t / (t + Real(2.0)), Real(kForwardGainLutHeight));
-}
-
-void forward_gain_lut_nu_tau_from_uv(Real u, Real v, OUT(Real) nu, OUT(Real) tau) {
-  Real s = unit_range_from_texture_coord(u, Real(kForwardGainLutWidth));
-  nu = Real(1.0) - Real(2.0) * s * s;
-  Real w = min(unit_range_from_texture_coord(v, Real(kForwardGainLutHeight)), Real(1.0) - Real(1e-6));
-  tau = Real(2.0) * w / (Real(1.0) - w);
-}
 
 // The gain in Mie scattering per channel for sunlight that crossed Mie
 // scattering optical depth tau, seen at cosine nu to the sun; held where
@@ -404,219 +315,4 @@ void ray_extent_inside(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, OUT(
   Real mu = dot(o, d) / r;
   hits_ground = ray_intersects_ground(atmosphere, r, mu);
   if (hits_ground) t_end = min(t_end, distance_to_bottom_boundary(atmosphere, r, mu));
-}
-
-// --- Multiple-scattering LUT texel (Hillaire 2020, sec. 5.5, eqs. 5-10) ------
-// The paper's form, kept for comparison (technique "hillaire2020"). At
-// radius r with the sun at zenith cosine mu_s: the second-order luminance
-// L_2 and the transfer f_ms, each averaged over the sphere of directions
-// (the isotropic phase times the 4 pi solid angle), then
-// Psi_ms = L_2 / (1 - f_ms), the sum of the geometric series of all orders
-// (eq. 9). Per unit solar irradiance. The ground reflects the sun with its
-// albedo.
-//
-// The direction at zenith cosine cos_theta in column i of n, whose azimuths
-// phi are stratified uniformly.
-Real3 gather_direction(Real cos_theta, int i, int n) {
-  Real phi = Real(2.0) * kPi * (Real(i) + Real(0.5)) / Real(n);
-  Real sin_theta = safe_sqrt(Real(1.0) - cos_theta * cos_theta);
-  return Real3(sin_theta * cos(phi), sin_theta * sin(phi), cos_theta);
-}
-
-Real3 multiple_scattering_texel(IN(Atmosphere) atmosphere, Real r, Real mu_s) {
-  Real3 o = Real3(0.0, 0.0, r);
-  Real3 sun_dir = Real3(safe_sqrt(Real(1.0) - mu_s * mu_s), Real(0.0), mu_s);
-  Real3 l_2 = Real3(0.0);
-  Real3 f_ms = Real3(0.0);
-  const int n = kMultipleScatteringDirectionsSqrt;
-  for (int i = 0; i < n; ++i) {
-    for (int j = 0; j < n; ++j) {
-      // The paper's rows: cos(theta) stratified uniformly over the sphere.
-      Real3 d = gather_direction(Real(1.0) - Real(2.0) * (Real(j) + Real(0.5)) / Real(n), i, n);
-      Real t_end;
-      bool hits_ground;
-      ray_extent_inside(atmosphere, o, d, t_end, hits_ground);
-      Real3 luminance, transmittance, f;
-      integrate_scattering(atmosphere, o, d, Real(0.0), t_end, sun_dir, kMultipleScatteringSteps,
-                           kSourceIsotropicSun, hits_ground, luminance, transmittance, f);
-      l_2 += luminance;
-      f_ms += f;
-    }
-  }
-  Real inv_count = Real(1.0) / Real(n * n);
-  l_2 *= inv_count;
-  f_ms *= inv_count;
-  return l_2 / (Real3(1.0) - f_ms);
-}
-
-// --- Scattering orders (the default multiple-scattering LUT) ------------------
-// The paper's 1 / (1 - f_ms) assumes that every order sees the same
-// neighbourhood as the second, and its L_2 leaves out the sky's light
-// reflected by the ground. Against the path tracer (Earth, sun 60 deg up)
-// the orders above the second come out 40 % low and the blue sky 7 %.
-// Here the orders are summed one by one, each from the last, as
-// Bruneton and Neyret do, but kept to Hillaire's 2D table over (r, mu_s):
-// the light of an order at a point is described by its spherical-harmonic
-// terms to degree kFieldDegree in the frame of the zenith and the sun
-// (FieldMoments; Hillaire's isotropic assumption keeps the mean J_n alone,
-// the higher terms carry the forward scattering of thick dust).
-//   order 1: the sun scattered once (true phase functions) or reflected by
-//        the ground, over the sphere at (r, mu_s);
-//   E_1: the sun scattered once, as irradiance on the ground;
-//   order n + 1: order n scattered once more (scattered_field) along
-//        every direction, plus the ground lit by E_n; E_(n+1): order n
-//        scattered onto the ground.
-// Psi_ms = J_1 + ... + J_N plus the geometric tail J_N q / (1 - q), with q
-// the ratio of the last two orders, and the other terms alike; the
-// ground's sky light is the same sum over E_n (terrain and the 400 km view
-// use it). N = kScatteringOrders.
-
-// Row j of n over the sphere for a point at radius r: half the rows above
-// the horizon, half below it, each packed toward the horizon by a square
-// law, where the light arriving near the ground changes fastest (the sky
-// brightens to the horizon, the ground begins). With uniform rows in
-// cos(theta), 8 x 8 directions left the noon sky's higher orders 3 %
-// lower than 16 x 16 did. Returns cos(theta) of the row's middle and sets
-// `weight` to the row's share of the sphere (the rows' shares sum to 1).
-// For the ground's hemisphere (`upper_half`) the rows span [0, 1] alone.
-Real gather_row_cosine(IN(Atmosphere) atmosphere, Real r, int j, int n, bool upper_half,
-                       OUT(Real) weight) {
-  Real ratio = atmosphere.bottom_radius / r;
-  Real mu_h = upper_half ? Real(0.0) : -safe_sqrt(Real(1.0) - ratio * ratio);
-  int half_rows = upper_half ? n : n / 2;
-  bool above = upper_half || j < half_rows;
-  int k = above ? j : j - half_rows;
-  Real s0 = Real(k) / Real(half_rows), s1 = Real(k + 1) / Real(half_rows);
-  Real sm = Real(0.5) * (s0 + s1);
-  Real span = above ? Real(1.0) - mu_h : Real(1.0) + mu_h;
-  weight = span * (s1 * s1 - s0 * s0) / (upper_half ? Real(1.0) : Real(2.0));
-  return above ? mu_h + span * sm * sm : mu_h - span * sm * sm;
-}
-
-// Light l arriving along d (local frame), added to the moments (or, for
-// the ground's irradiance, l d.z to the mean alone).
-void add_to_moments(INOUT(FieldMoments) f, IN(Real3) l, IN(Real3) d, bool ground_irradiance) {
-  if (ground_irradiance) {
-    f.part[kFieldMean] += l * max(d.z, Real(0.0));
-    return;
-  }
-  for (int k = 0; k < kFieldParts; ++k) f.part[k] += field_basis(k, d.x, d.y, d.z) * l;
-}
-
-// The azimuths of row j of n, over [0, pi] alone: the light is the same
-// along the mirror image of a direction in the sun's vertical plane
-// (y -> -y) and the moments are even in y, so that azimuths pair off and
-// one of each pair counts twice (`mirror`); 0 and pi are their own images.
-// Rows alternate between (i + 1/2) 2 pi / n and i 2 pi / n. With n = 8,
-// cos(4 phi) is zero on every azimuth of the first kind and one in size on
-// the second; alternating, the degree-4 terms come out right on average,
-// as they do with 12 or 16 azimuths a row (Mars sunset 7.9 / 7.6 / 5.4 %
-// with the first kind alone, 7.0 / 6.6 / 4.8 % with 12 or 16 a row).
-int traced_azimuths(int j, int n) { return (j & 1) == 0 ? n / 2 : n / 2 + 1; }
-
-Real row_azimuth(int j, int i, int n, OUT(Real) mirror) {
-  bool offset = (j & 1) == 0;
-  mirror = offset || (i > 0 && i < n / 2) ? Real(2.0) : Real(1.0);
-  return Real(2.0) * kPi * (Real(i) + (offset ? Real(0.5) : Real(0.0))) / Real(n);
-}
-
-// The cosine to the sun of row j of n whose shares of Henyey-Greenstein's
-// g are equal: its inverse distribution at the row's middle.
-Real henyey_greenstein_row_cosine(Real g, int j, int n) {
-  Real xi = (Real(j) + Real(0.5)) / Real(n);
-  if (abs(g) < Real(1e-3)) return Real(2.0) * xi - Real(1.0);
-  Real k = (Real(1.0) - g * g) / (Real(1.0) - g + Real(2.0) * g * xi);
-  return clamp_cosine((Real(1.0) + g * g - k * k) / (Real(2.0) * g));
-}
-
-// The moments of the light arriving at (r, mu_s) from `source_kind` (see
-// FieldMoments); for the ground (`ground_irradiance`) the mean is instead
-// the irradiance, over the cosine-weighted upper hemisphere.
-//
-// The first order's Mie light is the sun's glow: its phase peaks within a
-// few degrees of the sun, where n x n directions packed toward the horizon
-// put hardly a ray (on Mars, g = 0.75, the noon sky came out 7-9 % off
-// with 8 x 8 and 2.7 % with 64 x 64). Its directions are drawn instead
-// from rows of equal share of Henyey-Greenstein about the sun, each weighed
-// by Cornette-Shanks over Henyey-Greenstein, 3 (1 + nu^2) / (2 (2 + g^2)):
-// what is left to integrate, the light's path through the air, changes
-// slowly with direction. Rayleigh and the ground keep the horizon's rows.
-FieldMoments gather_order(IN(Atmosphere) atmosphere, Real r, Real mu_s, int source_kind,
-                          bool ground_irradiance) {
-  Real3 o = Real3(0.0, 0.0, r);
-  Real3 sun_dir = Real3(safe_sqrt(Real(1.0) - mu_s * mu_s), Real(0.0), mu_s);
-  FieldMoments f;
-  for (int k = 0; k < kFieldParts; ++k) f.part[k] = Real3(0.0);
-  bool first_order = source_kind == kSourceFirstOrder;
-  int kind = first_order ? kSourceSunRayleigh : source_kind;
-  const int n = kMultipleScatteringDirectionsSqrt;
-  for (int j = 0; j < n; ++j) {
-    Real weight;
-    Real cos_theta = gather_row_cosine(atmosphere, r, j, n, ground_irradiance, weight);
-    Real sin_theta = safe_sqrt(Real(1.0) - cos_theta * cos_theta);
-    for (int i = 0; i < traced_azimuths(j, n); ++i) {
-      Real mirror;
-      Real phi = row_azimuth(j, i, n, mirror);
-      Real3 d = Real3(sin_theta * cos(phi), sin_theta * sin(phi), cos_theta);
-      Real t_end;
-      bool hits_ground;
-      ray_extent_inside(atmosphere, o, d, t_end, hits_ground);
-      Real3 luminance, transmittance, f_ms;
-      integrate_scattering(atmosphere, o, d, Real(0.0), t_end, sun_dir, kMultipleScatteringSteps,
-                           kind, hits_ground && !ground_irradiance, luminance, transmittance,
-                           f_ms);
-      add_to_moments(f, (mirror * weight / Real(n)) * luminance, d, ground_irradiance);
-    }
-  }
-  if (first_order) {
-    // About the sun: (sun_dir, across, side) orthonormal; sun_dir has no y.
-    Real3 across = Real3(0.0, 1.0, 0.0);
-    Real3 side = Real3(sun_dir.z, Real(0.0), -sun_dir.x);
-    Real g = atmosphere.mie_g;
-    // Over the whole sphere the shares sum to 1; the ground's hemisphere
-    // rows above sum to 1 over half of it.
-    Real share = (ground_irradiance ? Real(2.0) : Real(1.0)) / Real(n * n);
-    for (int j = 0; j < n; ++j) {
-      Real nu = henyey_greenstein_row_cosine(g, j, n);
-      Real sin_nu = safe_sqrt(Real(1.0) - nu * nu);
-      Real weight = Real(1.5) * (Real(1.0) + nu * nu) / (Real(2.0) + g * g);
-      for (int i = 0; i < traced_azimuths(j, n); ++i) {
-        Real mirror;
-        Real phi = row_azimuth(j, i, n, mirror);
-        Real3 d = nu * sun_dir + sin_nu * (cos(phi) * side + sin(phi) * across);
-        if (ground_irradiance && d.z <= Real(0.0)) continue;
-        Real t_end;
-        bool hits_ground;
-        ray_extent_inside(atmosphere, o, d, t_end, hits_ground);
-        Real3 luminance, transmittance, f_ms;
-        integrate_scattering(atmosphere, o, d, Real(0.0), t_end, sun_dir,
-                             kMultipleScatteringSteps, kSourceSunMie, false, luminance,
-                             transmittance, f_ms);
-        // The mean over the sphere of L = K p is the mean over these
-        // directions of K times the weight, over 4 pi.
-        add_to_moments(f, mirror * share * weight / (Real(4.0) * kPi) * luminance, d,
-                       ground_irradiance);
-      }
-    }
-  }
-  // Irradiance: int L cos dw over the hemisphere, 2 pi times the mean.
-  if (ground_irradiance) f.part[kFieldMean] *= Real(2.0) * kPi;
-  return f;
-}
-
-// The ground as the irradiance integrals see it: a hair above the bottom
-// sphere, so that the horizontal directions do not start inside it.
-Real ground_gather_radius(IN(Atmosphere) atmosphere) {
-  return atmosphere.bottom_radius + Real(1.0);
-}
-
-// The sum x_sum of orders 1 to N and the geometric tail of the orders
-// beyond, x_N q / (1 - q), whose ratio q is that of the last two orders'
-// mean radiance j_(N-1), j_N, per channel (a moment takes the tail of its
-// mean). The ratio still grows with the order: with N = 3 the tail left
-// the blue ground's sky light 1 % below N = 5; with N = 4, 0.3 %.
-Real3 with_geometric_tail(IN(Real3) j_before_last, IN(Real3) j_last, IN(Real3) x_sum,
-                          IN(Real3) x_last) {
-  Real3 q = clamp(j_last / max(j_before_last, Real3(1e-30)), Real3(0.0), Real3(0.9));
-  return x_sum + x_last * q / (Real3(1.0) - q);
 }

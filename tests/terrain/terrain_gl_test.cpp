@@ -32,15 +32,9 @@ class TerrainGLTest : public ::testing::Test {
 
   // Draws the terrain over a magenta background; returns RGBA, bottom-up.
   std::vector<float> draw(TerrainRenderer& terrain, const Camera& camera, const glm::dvec3& sun) {
-    glBindFramebuffer(GL_FRAMEBUFFER, fbo_.id());
-    glViewport(0, 0, kWidth, kHeight);
     const float magenta[4] = {1, 0, 1, 1};
-    const float far_depth = 0.0f;
-    glClearNamedFramebufferfv(fbo_.id(), GL_COLOR, 0, magenta);
-    glClearNamedFramebufferfv(fbo_.id(), GL_DEPTH, 0, &far_depth);
     glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_GREATER);
+    begin_reversed_z(fbo_.id(), kWidth, kHeight, magenta);
     glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, block_.id());
     TerrainLighting lighting;
     lighting.sun_dir_body = sun;

@@ -13,7 +13,9 @@ Real forward_gain_lookup(IN(Atmosphere) atmosphere, Real nu, Real tau);
 
 #include "atmosphere/shaders/sunlight.glsl"
 #include "atmosphere/shaders/ground.glsl"
+#include "atmosphere/shaders/hillaire_luts.glsl"
 #include "atmosphere/shaders/hillaire_functions.glsl"
+#include "atmosphere/shaders/hillaire_orders.glsl"
 
 #ifdef TRANSMITTANCE_PASS
 // The transmittance pass integrates directly and samples no LUT.
