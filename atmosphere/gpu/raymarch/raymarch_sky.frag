@@ -1,8 +1,16 @@
 // Nishita et al. 1993, single scattering by nested ray marching: along the
 // view ray, VIEW_STEPS samples; at each, LIGHT_STEPS samples toward the sun
 // for its transmittance. Also composites the opaque surfaces behind the
-// atmosphere (aerial perspective) and the sun disk.
+// atmosphere (aerial perspective), and draws the sun disk and the ground
+// where no surface was drawn as every technique does (sun.glsl, ground.glsl).
 #include "atmosphere/shaders/atmosphere_block.glsl"
+
+// The sun's light is marched, never looked up.
+Real3 transmittance_lookup(IN(Atmosphere) atmosphere, Real r, Real mu) {
+  return transmittance_to_top(atmosphere, r, mu, LIGHT_STEPS);
+}
+#include "atmosphere/shaders/sunlight.glsl"
+#include "atmosphere/shaders/ground.glsl"
 
 in vec2 v_ndc;
 layout(location = 0) out vec4 o_radiance;
@@ -70,9 +78,7 @@ void main() {
       vec3 extinction = extinction_at(atmosphere, altitude);
       vec3 transmittance_to_camera = exp(-(optical_depth + 0.5 * extinction * ds));
       optical_depth += extinction * ds;
-      float mu_s = dot(p, u_sun_dir) / r;
-      if (ray_intersects_ground(atmosphere, r, mu_s)) continue;  // in the planet's shadow
-      vec3 transmittance_to_sun = transmittance_to_top(atmosphere, r, mu_s, LIGHT_STEPS);
+      vec3 transmittance_to_sun = sun_visibility(atmosphere, r, dot(p, u_sun_dir) / r);
       vec3 scattering =
           atmosphere.rayleigh_scattering *
               profile_density(atmosphere.rayleigh_density, altitude) * phase_r +
@@ -88,21 +94,14 @@ void main() {
   if (depth == 0.0 && hits_ground) {
     float t_ground_near, t_ground_far;
     ray_sphere(camera, dir, atmosphere.bottom_radius, t_ground_near, t_ground_far);
-    vec3 p = camera + t_ground_near * dir;
-    float r = length(p);
-    float mu_s = dot(p, u_sun_dir) / r;
-    vec3 sun = mu_s > 0.0 ? transmittance_to_top(atmosphere, r, mu_s, LIGHT_STEPS) : vec3(0.0);
-    surface = atmosphere.ground_albedo / kPi * atmosphere.solar_irradiance * sun * max(mu_s, 0.0);
+    surface = atmosphere.solar_irradiance *
+              ground_radiance(atmosphere, camera + t_ground_near * dir, u_sun_dir);
   }
   radiance += transmittance * surface;
 
-  // The sun disk, uniform radiance E / (pi alpha^2), on open sky only.
+  // The limb-darkened sun disk, on open sky only.
   if (depth == 0.0 && !hits_ground) {
-    float cos_alpha = cos(atmosphere.sun_angular_radius);
-    if (dot(dir, u_sun_dir) > cos_alpha) {
-      float solid_angle = 2.0 * kPi * (1.0 - cos_alpha);
-      radiance += transmittance * atmosphere.solar_irradiance / solid_angle;
-    }
+    radiance += transmittance * sun_disk_radiance(atmosphere, dot(dir, u_sun_dir));
   }
   // Keep within half-float range for the HDR target.
   o_radiance = vec4(min(radiance, vec3(6.0e4)), 1.0);
