@@ -47,7 +47,7 @@ Body scene_body(const Scene& scene);
 AtmosphereModel scene_atmosphere(const Scene& scene, const Body& body);
 
 // The scene's camera in atmosphere space, ray for ray the one FrameRenderer
-// builds (render/frame.cpp), for the path tracer.
+// builds (both are atmo_ray_from_ndc, atmosphere_space.h), for the path tracer.
 ReferenceView reference_view(const Scene& scene, const Body& body, const AtmosphereModel& model);
 
 }  // namespace planet

@@ -55,7 +55,7 @@ class AtmosphereTechnique {
   // The sky's irradiance on horizontal ground per unit solar irradiance,
   // after prepare(): a one-row RGBA texture over the sun's zenith cosine
   // whose texel i of n holds mu_s = mu_s_from_sky_irradiance_u(i / (n - 1))
-  // (atmosphere_functions.glsl). 0 when the technique does not compute it;
+  // (lut_coordinates.glsl). 0 when the technique does not compute it;
   // the terrain then estimates its own.
   virtual GLuint ground_irradiance() const { return 0; }
 };

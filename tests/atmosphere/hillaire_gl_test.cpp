@@ -1,5 +1,5 @@
 // The hillaire technique on the GPU against the same integrals on the CPU
-// (atmosphere/hillaire_math.h), and its frames checked for what a person
+// (atmosphere/math/hillaire_math.h), and its frames checked for what a person
 // must see: no NaN or Inf anywhere, no pop where its two paths meet.
 #include "atmosphere/gpu/hillaire/hillaire_technique.h"
 #include "atmosphere/math/hillaire_math.h"

@@ -1,4 +1,4 @@
-// The shared math (atmosphere/shaders/atmosphere_functions.glsl compiled as
+// The shared math (atmosphere/shaders/*.glsl, atmosphere/math/shared_math.h, compiled as
 // C++ double) against closed forms.
 #include "atmosphere/math/shared_math.h"
 

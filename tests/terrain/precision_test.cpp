@@ -90,14 +90,13 @@ TEST_P(PrecisionTest, VerticesMoveSmoothlyOnlyWithCameraRelativePlacement) {
   double ground_height = 0;
   surface.point(glm::normalize(ground), &ground_height);
   place.height = ground_height + GetParam().height;
-  glm::dvec3 eye = geodesy.body_from_geodetic(place);
   // Looking straight down at the tile, moving east.
-  glm::dmat3 enu = geodesy.body_from_enu(place);
+  Camera camera = geodesy.camera_at(place, 0.0, -glm::half_pi<double>(), glm::radians(60.0));
+  glm::dvec3 eye = camera.pos_body;
   Projector p;
-  p.view_from_body = glm::transpose(
-      enu * glm::dmat3(glm::mat3_cast(enu_from_camera(0, -glm::half_pi<double>(), 0))));
-  p.f = 0.5 * kHeight / std::tan(glm::radians(30.0));
-  glm::dvec3 step = enu[0] * 1e-3;
+  p.view_from_body = glm::mat3_cast(glm::conjugate(camera.body_from_camera));
+  p.f = 0.5 * kHeight / std::tan(0.5 * camera.vertical_fov);
+  glm::dvec3 step = geodesy.body_from_enu(place)[0] * 1e-3;
 
   double relative = worst_unexplained_step(tile, eye, step, p, true);
   double absolute = worst_unexplained_step(tile, eye, step, p, false);
