@@ -57,7 +57,9 @@ void run(const CaptureArgs& args) {
   options.progress = !args.quiet;
   options.pixel_budget = args.pixel_budget;
   options.terrain_cache_bytes = size_t(args.terrain_cache_mib * 1048576.0);
-  if (script.body.has_atmosphere()) script_technique(script);  // before GL starts
+  // Before GL starts.
+  if (script.body.has_atmosphere()) script_technique(script);
+  check_keyframes_above_ground(script);
   auto context = GlContext::create_headless();
   if (!args.quiet) {
     std::fprintf(stderr, "planet: %s, %dx%d, %d frames at %g fps, %s sky on %s\n",

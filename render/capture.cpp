@@ -6,6 +6,7 @@
 #include "core/image_io.h"
 #include "core/progress.h"
 #include "render/frame.h"
+#include "terrain/ground.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -71,6 +72,23 @@ TechniqueChoice script_technique(const FlightScript& script) {
     return parse_technique(script.technique);
   } catch (const InputError& e) {
     throw InputError(fmt::format("{}: technique: {}", script.file.string(), e.what()));
+  }
+}
+
+void check_keyframes_above_ground(const FlightScript& script) {
+  if (script.allow_below_ground) return;
+  TerrainSurface surface(script.body.shape, parse_terrain(script.body));
+  Geodesy geodesy(script.body.shape);
+  for (size_t i = 0; i < script.keyframes.size(); ++i) {
+    const Geodetic& place = script.keyframes[i].place;
+    double ground = ground_height(surface, geodesy, place);
+    if (place.height < ground) {
+      throw InputError(fmt::format(
+          "{}: keyframes[{}]: the camera is {:.1f} m below the ground (height_m {:.1f}, the "
+          "ground {:.1f} m above the ellipsoid there; planet probe ground gives it): raise it, or "
+          "set \"allow_below_ground\": true",
+          script.file.string(), i, ground - place.height, place.height, ground));
+    }
   }
 }
 

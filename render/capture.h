@@ -39,6 +39,11 @@ class CaptureInterrupted : public std::runtime_error {
 // registry without GL: InputError naming the script.
 TechniqueChoice script_technique(const FlightScript& script);
 
+// Every keyframe above the ground under it (terrain/ground.h), unless the
+// script allows otherwise: InputError naming the keyframe, its height and
+// the ground's. No GL needed.
+void check_keyframes_above_ground(const FlightScript& script);
+
 // Needs a current GL context. Each frame's sidecar JSON is written after its
 // images, so a frame with a sidecar is complete.
 CaptureResult run_capture(const FlightScript& script, const CaptureOptions& options);

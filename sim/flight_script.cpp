@@ -82,6 +82,7 @@ FlightScript load_flight_script(const std::filesystem::path& file) {
   // The name is checked against the available techniques by the renderer
   // (sim knows no GL), with this file and field in the message.
   s.technique = root.string_or("technique", "hillaire");
+  s.allow_below_ground = root.boolean_or("allow_below_ground", false);
 
   // The sun: by the clock and the body's ephemeris, or fixed by hand.
   if (root.has("start_utc") == root.has("sun")) {

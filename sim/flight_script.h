@@ -52,6 +52,9 @@ struct FlightScript {
   // "sun" block holds.
   bool has_clock = false;
   UtcSeconds start_utc = 0;
+  // "allow_below_ground": keyframes may lie under the terrain (a cave, a
+  // view from inside); otherwise capture refuses them.
+  bool allow_below_ground = false;
 
   double duration() const { return keyframes.back().time - keyframes.front().time; }
   // Frames at t = start + i / frame_rate for every such time in the flight.

@@ -17,6 +17,20 @@ FreeFlight::FreeFlight(const Body& body, const Geodetic& place, double heading)
 FreeFlight::FreeFlight(const Body& body, const Camera& camera)
     : geodesy_(body.shape), camera_(camera), ground_([](const Geodetic&) { return 0.0; }) {}
 
+void FreeFlight::set_ground(std::function<double(const Geodetic&)> ground) {
+  ground_ = std::move(ground);
+  keep_above_ground();
+}
+
+void FreeFlight::keep_above_ground() {
+  Geodetic g = geodesy_.geodetic_from_body(camera_.pos_body);
+  double floor = ground_(g) + kClearance;
+  if (g.height < floor) {
+    g.height = floor;
+    camera_.pos_body = geodesy_.body_from_geodetic(g);
+  }
+}
+
 double FreeFlight::height_above_ground() const {
   Geodetic g = geodesy_.geodetic_from_body(camera_.pos_body);
   return g.height - ground_(g);
@@ -39,13 +53,7 @@ void FreeFlight::step(double dt, UtcSeconds, const FlightInput& input) {
   glm::dvec3 before = camera_.pos_body;
   camera_.pos_body += displacement;
 
-  // Never into the ground: lift back to the clearance along the vertical.
-  Geodetic g = geodesy_.geodetic_from_body(camera_.pos_body);
-  double floor = ground_(g) + kClearance;
-  if (g.height < floor) {
-    g.height = floor;
-    camera_.pos_body = geodesy_.body_from_geodetic(g);
-  }
+  keep_above_ground();  // never into the ground
   speed_ = dt > 0 ? glm::length(camera_.pos_body - before) / dt : 0.0;
 }
 

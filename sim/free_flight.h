@@ -21,8 +21,8 @@ class FreeFlight : public FlightController {
   double speed() const override { return speed_; }
 
   // The surface's height above the ellipsoid at a place (0 until a terrain
-  // gives one).
-  void set_ground(std::function<double(const Geodetic&)> ground) { ground_ = std::move(ground); }
+  // gives one); a camera below it plus the clearance is lifted at once.
+  void set_ground(std::function<double(const Geodetic&)> ground);
   double height_above_ground() const;
 
   static constexpr double kClearance = 0.5;       // metres above the surface
@@ -35,6 +35,9 @@ class FreeFlight : public FlightController {
   Geodesy geodesy_;
   Camera camera_;
   double speed_ = 0;
+  // Lifts the camera along the vertical to the clearance above the ground.
+  void keep_above_ground();
+
   std::function<double(const Geodetic&)> ground_;
 };
 

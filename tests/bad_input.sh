@@ -24,7 +24,7 @@ expect "--time: '2026-06-21T25:00:00Z'" "$planet" probe sun --lat 0 --lon 0 --ti
 expect "--time: 'noon'" "$planet" probe sun --lat 0 --lon 0 --time noon
 expect "vulcan" "$planet" probe sun --planet vulcan --lat 0 --lon 0 --time 2026-06-21T12:00:00Z
 expect "--lat: 91" "$planet" fly --lat 91
-expect "--height: -7000000 m is inside" "$planet" fly --height -7e6
+expect "--height: -7e+06 m is below the ground" "$planet" fly --height -7e6
 expect "--technique: unknown atmosphere technique 'nope'" "$planet" fly --technique nope
 expect "hillaire has no quality parameter 'foo' (its parameters: sky_view_steps," \
   "$planet" fly --technique hillaire:foo=1
@@ -37,6 +37,14 @@ sed 's/"technique": "hillaire"/"technique": "hillaire:per_pixel_steps=2"/' "$fli
 expect "steps.json: technique: hillaire: per_pixel_steps=2 is outside 4 to 256" \
   "$planet" capture --flight "$work/steps.json" --out "$work/s" --quiet
 [ -e "$work/s" ] && { echo "FAIL: a capture with a bad technique left its folder"; failed=1; }
+# A keyframe under the ground (919 m there) is refused, unless the script allows it.
+sed 's/"height_m": 921.4,/"height_m": 500.0,/' "$flights/ascent.json" > "$work/under.json"
+expect "under.json: keyframes.0.: the camera is 419.4 m below the ground (height_m 500.0, the ground 919.4 m" \
+  "$planet" capture --flight "$work/under.json" --out "$work/u" --quiet
+sed 's/"technique": "hillaire",/"technique": "hillaire", "allow_below_ground": true,/' "$work/under.json" \
+  > "$work/under_allowed.json"
+"$planet" capture --flight "$work/under_allowed.json" --out "$work/ua" --frames 0:1 --quiet ||
+  { echo "FAIL: allow_below_ground did not allow it"; failed=1; }
 expect "vulcan" "$planet" fly --planet vulcan
 expect "--time: 'yesterday'" "$planet" fly --time yesterday
 expect "never reaches latitude" "$planet" fly --lat 60 --height 400000 --orbit-inclination 30 --time 2026-01-01T00:00:00Z

@@ -49,14 +49,22 @@ press b 3        # body: Mars
 press t 4        # technique: ...
 press F12 5      # screenshot
 press F9 6       # recording
-sleep 1.5
+started=$(date +%s.%N)
+# Down at ten times the speed for a while (3.4 km at 2 h per second): the
+# camera lands on the ground and stays above it (the replay's capture
+# refuses a keyframe below it).
+xdotool keydown Shift_L keydown f; sleep 5; xdotool keyup f keyup Shift_L
 press F9 7       # recorded N frames into ...
+recorded_wall=$(awk -v a="$started" -v b="$(date +%s.%N)" 'BEGIN { print b - a }')
 xdotool keydown Escape; sleep 0.5; xdotool keyup Escape
 wait "$fly"; rc=$?
 cat "$work/fly.txt"
 [ "$rc" -eq 0 ] || { echo "FAIL: planet fly exited $rc"; cat "$work/fly.err"; exit 1; }
 grep -q "^body: Earth" "$work/fly.txt" && grep -q "^body: Mars" "$work/fly.txt" &&
   grep -q "^technique: " "$work/fly.txt" || { echo "FAIL: body or technique did not switch"; exit 1; }
+# The default start: a few metres above the ground, not the ellipsoid.
+grep -q "^body: Earth, 2.0 m above the ground (92[0-9].[0-9] m above the ellipsoid)" "$work/fly.txt" ||
+  { echo "FAIL: the start is not 2 m above the Alps' ground"; exit 1; }
 for n in 0000 0001; do
   for ext in png exr; do
     [ -s "$work/screenshot_$n.$ext" ] || { echo "FAIL: no screenshot_$n.$ext"; exit 1; }
@@ -67,7 +75,13 @@ cmp -s "$work/screenshot_0000.png" "$work/screenshot_0001.png" &&
 # The recorded flight replays headless.
 recorded=$(grep -o "into [^ ]*flight_0000.json" "$work/fly.txt" | cut -d' ' -f2)
 [ -n "$recorded" ] && [ -f "$recorded" ] || { echo "FAIL: no recorded flight"; exit 1; }
-"$planet" capture --flight "$recorded" --out "$work/replay" --quiet ||
-  { echo "FAIL: the recorded flight does not replay"; exit 1; }
+"$planet" capture --flight "$recorded" --out "$work/replay" --quiet 2> "$work/replay.err" ||
+  { echo "FAIL: the recorded flight does not replay:"; cat "$work/replay.err"; exit 1; }
 [ -f "$work/replay/frame_00001.png" ] || { echo "FAIL: replay has fewer than two frames"; exit 1; }
+# The clock follows wall time: the recording spans (nearly) the seconds it
+# took, however slowly frames came.
+recorded_clock=$(grep -o '"time": [0-9.]*' "$recorded" | tail -1 | cut -d' ' -f2)
+echo "recorded $recorded_clock s of flight in $recorded_wall s of wall time"
+awk -v c="$recorded_clock" -v w="$recorded_wall" 'BEGIN { exit !(c > 0.8 * (w - 1)) }' ||
+  { echo "FAIL: the clock ran slower than wall time"; exit 1; }
 echo "window opened, switched body and technique, wrote two screenshots, recorded a flight that replays"

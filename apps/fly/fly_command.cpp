@@ -8,6 +8,7 @@
 #include "atmosphere/gpu/registry.h"
 #include "core/error.h"
 #include "gl/context.h"
+#include "sim/free_flight.h"
 #include "sim/kepler.h"
 #include "sim/orbit_flight.h"
 
@@ -38,8 +39,11 @@ void run(const FlyArgs& args) {
   }
   parse_utc(args.time, "--time");
   Body body = load_body(find_body_file(args.planet));
-  if (args.height_m < 0) {
-    throw InputError(fmt::format("--height: {} m is inside {}", args.height_m, body.name));
+  if (args.height_m < FreeFlight::kClearance) {
+    throw InputError(
+        fmt::format("--height: {:g} m is below the ground's clearance: heights count "
+                    "from the ground, and the camera stays at least {:g} m above it",
+                    args.height_m, FreeFlight::kClearance));
   }
   try {
     parse_technique(args.technique);
@@ -80,7 +84,7 @@ void add_fly_command(CLI::App& app) {
   cmd->add_option("--planet", args->planet, "Body name or file")->capture_default_str();
   cmd->add_option("--lat", args->lat_deg, "Start latitude, degrees")->capture_default_str();
   cmd->add_option("--lon", args->lon_deg, "Start longitude, degrees")->capture_default_str();
-  cmd->add_option("--height", args->height_m, "Start height above the surface, metres")
+  cmd->add_option("--height", args->height_m, "Start height above the ground, metres")
       ->capture_default_str();
   cmd->add_option("--heading", args->heading_deg, "Start heading, degrees from north")
       ->capture_default_str();

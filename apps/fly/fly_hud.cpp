@@ -41,8 +41,10 @@ HudChanges Hud::draw(const HudView& v) {
   ImGui::NewFrame();
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
   ImGui::Begin("planet");
-  ImGui::Text("height %.1f m  speed %.2f m/s  lat %.4f  lon %.4f  sun %.1f deg", v.height_m,
-              v.speed_m_s, v.lat_deg, v.lon_deg, v.sun_elevation_deg);
+  ImGui::Text("height %.1f m above the ground (%.1f m above the ellipsoid)", v.height_m,
+              v.height_ellipsoid_m);
+  ImGui::Text("speed %.2f m/s  lat %.4f  lon %.4f  sun %.1f deg", v.speed_m_s, v.lat_deg, v.lon_deg,
+              v.sun_elevation_deg);
   ImGui::Text("frame %.1f ms  gpu ms:%s", v.frame_ms, v.passes.c_str());
   ImGui::Text("%s  UTC %s%s", v.body_name.c_str(), v.utc.c_str(),
               v.recording ? "  [recording]" : "");

@@ -11,7 +11,9 @@ struct GLFWwindow;
 namespace planet::apps {
 
 struct HudView {
-  double height_m = 0, speed_m_s = 0, lat_deg = 0, lon_deg = 0, sun_elevation_deg = 0;
+  double height_m = 0;            // above the ground under the camera
+  double height_ellipsoid_m = 0;  // above the body's ellipsoid
+  double speed_m_s = 0, lat_deg = 0, lon_deg = 0, sun_elevation_deg = 0;
   double frame_ms = 0;
   std::string passes;  // "pass ms pass ms ..."
   std::string body_name, utc;

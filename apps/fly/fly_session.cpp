@@ -7,6 +7,7 @@
 #include "sim/geodesy.h"
 #include "sim/orbit_flight.h"
 #include "sim/sun_ephemeris.h"
+#include "terrain/ground.h"
 
 #include <GLFW/glfw3.h>
 #include <fmt/format.h>
@@ -21,7 +22,11 @@ namespace planet::apps {
 namespace {
 
 constexpr double kStep = 1.0 / 120.0;  // fixed simulation step, seconds
-constexpr double kRecordRate = 10.0;   // recorded keyframes (= capture frames) per second
+// The clock follows wall time, in as many fixed steps as a frame needs (at
+// one frame a second, 120); only a stall longer than this (a suspended
+// machine) is dropped rather than flown through.
+constexpr double kLongestStallSeconds = 30.0;
+constexpr double kRecordRate = 10.0;  // recorded keyframes (= capture frames) per second
 const std::array<const char*, 3> kBodies = {"earth", "mars", "asteroid"};
 
 }  // namespace
@@ -59,9 +64,7 @@ bool FlySession::frame(double real_dt) {
   if (glfwWindowShouldClose(window_)) return false;
   for (int key : input_.take_presses(hud_.has_keyboard())) handle_key(key);
   FlightInput input = input_.read(hud_.has_keyboard(), hud_.has_mouse());
-  // Up to half a second of steps per frame: the simulation keeps real time
-  // on a slow renderer, and a stall (a window drag) is dropped.
-  for (int i = step_.advance(real_dt, 60); i > 0; --i) {
+  for (int i = step_.advance(real_dt, int(kLongestStallSeconds / kStep)); i > 0; --i) {
     // The clock runs at its scale; the pilot flies in real time (a paused
     // or fast clock changes the sun, not the controls).
     clock_.advance(kStep);
@@ -84,6 +87,10 @@ bool FlySession::frame(double real_dt) {
   glfwSwapBuffers(window_);
   check_gl_errors("fly frame");
   return true;
+}
+
+double FlySession::ground_at(const Geodetic& place) const {
+  return ground_height(renderer_->terrain()->surface(), *geodesy_, place);
 }
 
 Camera FlySession::camera() const {
@@ -122,18 +129,28 @@ void FlySession::load(const std::string& name, bool from_args) {
   Body body = load_body(find_body_file(name));
   attach(body);
   body_ = body;
+  geodesy_ = std::make_unique<Geodesy>(body.shape);
   body_key_ = name;
-  Geodetic place{glm::radians(args_.lat_deg), glm::radians(args_.lon_deg), args_.height_m};
-  if (!from_args) place.height = std::max(2.0, 1e-3 * body.shape.equatorial_radius);
+  // Heights count from the ground under the start place.
+  Geodetic place{glm::radians(args_.lat_deg), glm::radians(args_.lon_deg), 0.0};
+  double ground = ground_at(place);
+  place.height =
+      ground + (from_args ? args_.height_m : std::max(2.0, 1e-3 * body.shape.equatorial_radius));
   scripted_ = nullptr;
+  auto ground_fn = [this](const Geodetic& g) { return ground_at(g); };
   if (from_args && args_.orbit_inclination_deg >= 0) {
     KeplerOrbit orbit = circular_orbit_over(body, place, glm::radians(args_.orbit_inclination_deg),
                                             true, clock_.utc());
-    controller_ = std::make_unique<OrbitFlight>(body, orbit, clock_.utc());
+    auto orbit_flight = std::make_unique<OrbitFlight>(body, orbit, clock_.utc());
+    orbit_flight->set_ground(ground_fn);
+    controller_ = std::move(orbit_flight);
   } else {
-    controller_ = std::make_unique<FreeFlight>(body, place, glm::radians(args_.heading_deg));
+    auto free_flight = std::make_unique<FreeFlight>(body, place, glm::radians(args_.heading_deg));
+    free_flight->set_ground(ground_fn);
+    controller_ = std::move(free_flight);
   }
-  std::printf("body: %s\n", body.name.c_str());
+  std::printf("body: %s, %.1f m above the ground (%.1f m above the ellipsoid)\n", body.name.c_str(),
+              place.height - ground, place.height);
   std::fflush(stdout);
 }
 
@@ -165,10 +182,10 @@ void FlySession::handle_key(int key) {
 
 HudView FlySession::hud_view(const Camera& cam, const glm::dvec3& sun, double real_dt) const {
   HudView v;
-  Geodesy geodesy(body_.shape);
-  Geodetic g = geodesy.geodetic_from_body(cam.pos_body);
+  Geodetic g = geodesy_->geodetic_from_body(cam.pos_body);
   HorizonAngles sun_angles = horizon_angles(sun, g.lat, g.lon);
-  v.height_m = g.height;
+  v.height_m = g.height - ground_at(g);
+  v.height_ellipsoid_m = g.height;
   v.speed_m_s = controller_->speed();
   v.lat_deg = glm::degrees(g.lat);
   v.lon_deg = glm::degrees(g.lon);

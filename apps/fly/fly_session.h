@@ -9,6 +9,7 @@
 #include "sim/body.h"
 #include "sim/flight_controller.h"
 #include "sim/flight_recorder.h"
+#include "sim/geodesy.h"
 #include "sim/scripted_flight.h"
 #include "sim/utc_time.h"
 
@@ -20,7 +21,8 @@ struct GLFWwindow;
 namespace planet::apps {
 
 struct FlyArgs {
-  std::string planet = "earth", technique = "raymarch", time = "2026-06-21T10:00:00Z";
+  std::string planet = "earth", technique = "hillaire", time = "2026-06-21T10:00:00Z";
+  // height_m counts from the ground under the start place.
   double lat_deg = 46.55, lon_deg = 7.98, height_m = 2.0, heading_deg = 90.0;
   double orbit_inclination_deg = -1;
   int width = 960, height = 540;
@@ -39,6 +41,8 @@ class FlySession {
 
  private:
   Camera camera() const;
+  // The ground's height above the ellipsoid under a place, for this body.
+  double ground_at(const Geodetic& place) const;
   glm::dvec3 sun_dir() const;
   void attach(const Body& body);
   void load(const std::string& name, bool from_args);
@@ -59,6 +63,7 @@ class FlySession {
   double exposure_;
   std::string technique_, body_key_;
   Body body_;
+  std::unique_ptr<Geodesy> geodesy_;  // of body_
   std::unique_ptr<FrameRenderer> renderer_;
   Framebuffer ldr_framebuffer_;  // the renderer's tone-mapped target, to blit from
   std::unique_ptr<FlightController> controller_;

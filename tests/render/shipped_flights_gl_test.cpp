@@ -1,0 +1,56 @@
+// What every shipped flight shows, checked on a frame every ten: something
+// to see (no frame near black), and its keyframes above the ground.
+#include "render/capture.h"
+
+#include "core/data_paths.h"
+#include "core/image_io.h"
+#include "gl/context.h"
+
+#include <fmt/format.h>
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+namespace planet {
+namespace {
+
+class ShippedFlightGLTest : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(ShippedFlightGLTest, NoFrameIsBlackAndNoKeyframeIsUnderground) {
+  FlightScript script = load_flight_script(data_dir() / "flights" / (GetParam() + ".json"));
+  EXPECT_NO_THROW(check_keyframes_above_ground(script));
+  // A quarter of the size: what is seen, not its detail.
+  script.width /= 4;
+  script.height /= 4;
+  auto context = GlContext::create_headless();
+  auto dir = std::filesystem::temp_directory_path() /
+             ("planet-shipped-" + GetParam() + "-" + std::to_string(getpid()));
+  for (int frame = 0; frame < script.frame_count(); frame += 10) {
+    CaptureOptions options;
+    options.out_dir = dir;
+    options.first_frame = frame;
+    options.end_frame = frame + 1;
+    options.progress = false;
+    run_capture(script, options);
+    ImageRGB png = read_image_rgb(dir / fmt::format("frame_{:05d}.png", frame));
+    // A pixel counts as seen above a tenth of the 8-bit range (about 1 %
+    // of the radiance that maps to white); 1 % of the frame must be.
+    int seen = 0, pixels = png.width * png.height;
+    for (int i = 0; i < pixels; ++i) {
+      const float* p = &png.pixels[size_t(i) * 3];
+      if (0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2] > 0.1f) ++seen;
+    }
+    EXPECT_GE(seen, pixels / 100) << GetParam() << " frame " << frame << " is near black (" << seen
+                                  << " of " << pixels << " pixels seen)";
+  }
+  std::filesystem::remove_all(dir);
+}
+
+INSTANTIATE_TEST_SUITE_P(Flights, ShippedFlightGLTest,
+                         ::testing::Values("ascent", "asteroid_landing", "earth_orbit_terminator",
+                                           "mars_sunset", "terrain_asteroid", "terrain_earth",
+                                           "terrain_mars"),
+                         [](const auto& info) { return info.param; });
+
+}  // namespace
+}  // namespace planet
