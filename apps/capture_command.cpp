@@ -1,6 +1,7 @@
 // planet capture: a scripted flight rendered headless into EXR + PNG frames.
 #include "apps/commands.h"
 #include "core/error.h"
+#include "core/paths.h"
 #include "gl/context.h"
 #include "render/capture.h"
 #include "sim/flight_script.h"
@@ -57,9 +58,11 @@ void run(const CaptureArgs& args) {
   options.progress = !args.quiet;
   options.pixel_budget = args.pixel_budget;
   options.terrain_cache_bytes = size_t(args.terrain_cache_mib * 1048576.0);
-  // Before GL starts.
+  // Every input, and the output folder, before GL starts.
+  check_frames(script, options);
   if (script.body.has_atmosphere()) script_technique(script);
   check_keyframes_above_ground(script);
+  OutputFolder out(options.out_dir, "--out");
   auto context = GlContext::create_headless();
   if (!args.quiet) {
     std::fprintf(stderr, "planet: %s, %dx%d, %d frames at %g fps, %s sky on %s\n",
@@ -70,9 +73,12 @@ void run(const CaptureArgs& args) {
   try {
     result = run_capture(script, options);
   } catch (const CaptureInterrupted& e) {
+    out.keep();  // its complete frames
     std::fprintf(stderr, "planet: %s\n", e.what());
     std::exit(130);  // as a shell reports a program stopped by SIGINT
   }
+  out.keep();
+  if (args.quiet) return;
   std::printf("captured %d frames in %.1f s into %s (first %s, last %s)\n", result.frames,
               result.wall_seconds, options.out_dir.string().c_str(),
               result.first_png.filename().string().c_str(),
@@ -88,7 +94,7 @@ void add_capture_command(CLI::App& app) {
   cmd->add_option("--flight", args->flight_file, "Flight script (data/flights/*.json)")->required();
   cmd->add_option("--out", args->out_dir, "Output folder (default out/<flight name>)");
   cmd->add_option("--frames", args->frames, "Slice of frames A:B to render (B exclusive)");
-  cmd->add_flag("--quiet", args->quiet, "No progress output");
+  cmd->add_flag("--quiet", args->quiet, "Print nothing but errors");
   cmd->add_option("--pixel-budget", args->pixel_budget,
                   "Terrain detail: largest projected geometric error in pixels")
       ->check(CLI::Range(0.1, 100.0));

@@ -5,8 +5,43 @@
 #include "atmosphere/gpu/registry.h"
 #include "core/error.h"
 
+#include <fmt/format.h>
 #include <unistd.h>
+
 #include <cstdio>
+#include <string>
+
+// The first word that names no command where one is required (`planet
+// fly` spelt `planet flz`, `planet probe wind`), as one line; CLI11 would
+// only say that a subcommand is required.
+static std::string unknown_command(CLI::App& app, int argc, char** argv) {
+  CLI::App* level = &app;
+  std::string path = "planet";
+  auto names = [](CLI::App* a) {
+    std::string out;
+    for (CLI::App* sub : a->get_subcommands([](CLI::App*) { return true; })) {
+      out += (out.empty() ? "" : ", ") + sub->get_name();
+    }
+    return out;
+  };
+  for (int i = 1; i < argc; ++i) {
+    std::string word = argv[i];
+    if (word.empty() || word[0] == '-') return {};
+    auto subs = level->get_subcommands([](CLI::App*) { return true; });
+    if (subs.empty()) return {};
+    CLI::App* next = nullptr;
+    for (CLI::App* sub : subs) {
+      if (sub->check_name(word)) next = sub;
+    }
+    if (!next) return fmt::format("'{}' is not a command of {} ({})", word, path, names(level));
+    level = next;
+    path += " " + word;
+  }
+  if (level->get_require_subcommand_min() > 0) {
+    return fmt::format("{} needs a command: {} ({} --help says more)", path, names(level), path);
+  }
+  return {};
+}
 
 // One line on stderr; on a terminal, first end any progress line.
 static void report(const std::exception& e) {
@@ -29,6 +64,10 @@ int main(int argc, char** argv) {
   planet::apps::add_probe_sun_command(probe);
   planet::apps::add_probe_ground_command(probe);
 
+  if (std::string unknown = unknown_command(app, argc, argv); !unknown.empty()) {
+    std::fprintf(stderr, "planet: error: %s\n", unknown.c_str());
+    return 2;
+  }
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

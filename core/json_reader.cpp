@@ -1,6 +1,7 @@
 #include "core/json_reader.h"
 
 #include "core/error.h"
+#include "core/paths.h"
 
 #include <fmt/format.h>
 
@@ -28,6 +29,7 @@ std::string format_number(double v) { return fmt::format("{:g}", v); }
 }  // namespace
 
 JsonObject JsonObject::load(const std::filesystem::path& file) {
+  check_readable_file(file);
   std::ifstream in(file);
   if (!in) throw InputError(fmt::format("{}: cannot open file", file.string()));
   nlohmann::json document;

@@ -75,6 +75,22 @@ TechniqueChoice script_technique(const FlightScript& script) {
   }
 }
 
+void check_frames(const FlightScript& script, const CaptureOptions& options) {
+  const int total = script.frame_count();
+  const int first = options.first_frame;
+  const int end = options.end_frame < 0 ? total : options.end_frame;
+  if (first >= end) {
+    throw InputError(
+        fmt::format("--frames {}:{} is empty or reversed: the first frame must come "
+                    "before the end (one past the last)",
+                    first, end));
+  }
+  if (first < 0 || end > total) {
+    throw InputError(fmt::format("{}: --frames {}:{} lies outside the flight's frames 0:{}",
+                                 script.file.string(), first, end, total));
+  }
+}
+
 void check_keyframes_above_ground(const FlightScript& script) {
   if (script.allow_below_ground) return;
   TerrainSurface surface(script.body.shape, parse_terrain(script.body));
@@ -94,12 +110,9 @@ void check_keyframes_above_ground(const FlightScript& script) {
 
 CaptureResult run_capture(const FlightScript& script, const CaptureOptions& options) {
   const int total = script.frame_count();
+  check_frames(script, options);
   const int first = options.first_frame;
   const int end = options.end_frame < 0 ? total : options.end_frame;
-  if (first < 0 || first >= end || end > total) {
-    throw InputError(fmt::format("{}: --frames {}:{} lies outside the flight's frames 0:{}",
-                                 script.file.string(), first, end, total));
-  }
   std::optional<AtmosphereModel> atmosphere;
   std::unique_ptr<AtmosphereTechnique> technique;
   if (script.body.has_atmosphere()) {

@@ -39,6 +39,10 @@ class CaptureInterrupted : public std::runtime_error {
 // registry without GL: InputError naming the script.
 TechniqueChoice script_technique(const FlightScript& script);
 
+// InputError unless the options' frames are a non-empty slice of the
+// flight's.
+void check_frames(const FlightScript& script, const CaptureOptions& options);
+
 // Every keyframe above the ground under it (terrain/ground.h), unless the
 // script allows otherwise: InputError naming the keyframe, its height and
 // the ground's. No GL needed.

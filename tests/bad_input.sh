@@ -52,7 +52,23 @@ expect "outside the flight" "$planet" capture --flight "$flights/ascent.json" --
 expect "not a frame number" "$planet" capture --flight "$flights/ascent.json" --out "$work/c" --frames x:3 --quiet
 expect "--width: Value 0 not in range 1 to 8192" "$planet" reference --scene earth_noon --width 0 --out "$work/r.exr"
 expect "not expected: --bogus" "$planet" reference --bogus
-expect "A subcommand is required" "$planet"
+expect "planet needs a command: capture," "$planet"
+expect "planet probe needs a command: transmittance, sky, sun, ground" "$planet" probe
+expect "'flz' is not a command of planet (capture, " "$planet" flz
+expect "'wind' is not a command of planet probe (transmittance" "$planet" probe wind --planet earth
+expect "flights: cannot open file: it is a directory" "$planet" capture --flight "$flights" --out "$work/d" --quiet
+[ -e "$work/d" ] && { echo "FAIL: a capture of a directory left its folder"; failed=1; }
+expect "--out /proc/planet-nowhere/x: cannot create the folder" \
+  "$planet" capture --flight "$flights/ascent.json" --out /proc/planet-nowhere/x --quiet
+touch "$work/a_file"
+expect "--out $work/a_file/x: cannot be a folder: $work/a_file is a file" \
+  "$planet" capture --flight "$flights/ascent.json" --out "$work/a_file/x" --quiet
+expect "--frames 3:1 is empty or reversed" \
+  "$planet" capture --flight "$flights/ascent.json" --out "$work/c" --frames 3:1 --quiet
+# Checked before GL starts: no banner line before the error.
+sed 's/"technique": "hillaire"/"technique": "bruneton9"/' "$flights/ascent.json" > "$work/unknown.json"
+expect "unknown.json: technique: unknown atmosphere technique 'bruneton9'" \
+  "$planet" capture --flight "$work/unknown.json" --out "$work/k"
 mkdir -p "$work/cache/reference"
 echo "not sums" > "$work/cache/reference/earth_noon-4x2-64spp-rgb-0123456789abcdef.sums"
 expect "earth_noon-4x2-64spp-rgb-0123456789abcdef.sums: not the sums of a reference render" \
