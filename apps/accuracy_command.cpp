@@ -4,7 +4,11 @@
 // relative RMSE over the open sky alone, and the mean signed error (bias);
 // the images are written where a person can look at them.
 #include "apps/commands.h"
+#include "atmosphere/gpu/registry.h"
 #include "core/error.h"
+#include "core/interrupt.h"
+#include "core/paths.h"
+#include "core/progress.h"
 #include "core/tone_map.h"
 #include "gl/context.h"
 #include "lab/accuracy.h"
@@ -16,6 +20,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,11 +28,16 @@ namespace planet::apps {
 
 namespace {
 
+// What a reference gets when --spp is not given and none of the view is in
+// the cache: about a minute a scene at 32x16 on two cores.
+constexpr int kDefaultPaths = 4096;
+
 struct AccuracyArgs {
   std::string technique = "hillaire", out;
   std::vector<std::string> scenes;
-  std::string paths = "4096";
-  int width = 64, height = 32;
+  std::string paths;            // empty: the best cached reference, else kDefaultPaths
+  int width = 32, height = 16;  // the shipped references' size
+  bool quiet = false;
 };
 
 // Small images repeated pixel by pixel up to at least 256 columns, so that
@@ -63,22 +73,60 @@ void write_images(const std::filesystem::path& dir, const Scene& scene, const Im
 }
 
 void run_accuracy(const AccuracyArgs& args) {
-  std::vector<Scene> scenes;
-  if (args.scenes.empty()) {
-    scenes = canonical_scenes();
-  } else {
-    for (const auto& name : args.scenes) scenes.push_back(find_scene(name));
+  // Every input before any work: the technique, the scenes, the paths.
+  try {
+    parse_technique(args.technique);
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("--technique: {}", e.what()));
   }
-  PathBudget budget = PathBudget::parse(args.paths);
+  std::vector<Scene> scenes;
+  for (const Scene& s : args.scenes.empty() ? canonical_scenes() : std::vector<Scene>{}) {
+    if (scene_body(s).has_atmosphere()) scenes.push_back(s);
+  }
+  for (const auto& name : args.scenes) scenes.push_back(find_scene(name));
+  std::optional<PathBudget> given;
+  if (!args.paths.empty()) given = PathBudget::parse(args.paths);
+  std::vector<PathBudget> budgets;
+  for (Scene& scene : scenes) {
+    scene.width = args.width;
+    scene.height = args.height;
+    scene_atmosphere(scene, scene_body(scene));  // an airless scene fails here
+    std::optional<PathBudget> cached = best_cached_budget(scene, ReferenceMode::kRgb);
+    budgets.push_back(given ? *given : cached ? *cached : PathBudget(kDefaultPaths));
+    budgets.back().lane_paths(3);
+  }
+  std::optional<OutputFolder> folder;
+  if (!args.out.empty()) folder.emplace(args.out, "--out");
   auto context = GlContext::create_headless();
   std::printf("%-16s %-3s %11s %11s %9s %9s %9s %6s\n", "scene", "ch", "RMSE", "mean ref",
               "rel RMSE", "ref noise", "sky only", "bias");
-  for (Scene scene : scenes) {
-    scene.width = args.width;
-    scene.height = args.height;
-    Body body = scene_body(scene);
-    if (!body.has_atmosphere()) continue;
-    ReferenceRender ground_truth = reference_render(scene, budget);
+  InterruptScope interrupt;
+  for (size_t k = 0; k < scenes.size(); ++k) {
+    const Scene& scene = scenes[k];
+    const PathBudget& budget = budgets[k];
+    if (!reference_cached(scene, budget, ReferenceMode::kRgb) && !args.quiet) {
+      RenderCost cost = estimate_reference_cost(scene, budget, ReferenceMode::kRgb);
+      std::fprintf(stderr, "planet: %s\n",
+                   describe_uncached_reference(scene, budget, ReferenceMode::kRgb, cost).c_str());
+    }
+    double paths = double(scene.width) * scene.height * budget.spp;
+    Progress progress("reference " + scene.name, paths, "path", args.quiet);
+    bool first = true;
+    auto on_progress = [&](double done) {
+      if (first) progress.begin_at(done * paths);
+      first = false;
+      progress.update(done * paths);
+    };
+    ReferenceRender ground_truth;
+    try {
+      ground_truth = reference_render(scene, budget, ReferenceMode::kRgb, on_progress,
+                                      &InterruptScope::flag());
+    } catch (const ReferenceInterrupted& e) {
+      progress.finish();
+      std::fprintf(stderr, "planet: %s\n", e.what());
+      std::exit(kInterruptedExitStatus);
+    }
+    progress.finish();
     const ImageRGB& reference = ground_truth.image;
     ImageRGB technique = render_scene_with(scene, args.technique);
     TechniqueAccuracy accuracy = measure_accuracy(scene, technique, reference);
@@ -97,9 +145,10 @@ void run_accuracy(const AccuracyArgs& args) {
                   100 * noise[c] / std::max(e.mean_reference, 1e-30),
                   100 * accuracy.sky_channels[c].relative(), 100 * bias);
     }
-    if (!args.out.empty()) write_images(args.out, scene, technique, reference, accuracy);
+    if (folder) write_images(folder->path(), scene, technique, reference, accuracy);
     std::fflush(stdout);
   }
+  if (folder) folder->keep();
 }
 
 }  // namespace
@@ -108,14 +157,25 @@ void add_accuracy_command(CLI::App& app) {
   auto args = std::make_shared<AccuracyArgs>();
   CLI::App* cmd = app.add_subcommand(
       "accuracy", "Measure an atmosphere technique against the path-traced ground truth");
-  cmd->add_option("--technique", args->technique, "Atmosphere technique (default: hillaire)");
+  cmd->add_option("--technique", args->technique, "Atmosphere technique, NAME[:KEY=VALUE,...]")
+      ->capture_default_str();
   cmd->add_option("--scene", args->scenes, "Canonical scenes (default: all with an atmosphere)");
   cmd->add_option("--spp", args->paths,
-                  "Reference paths per pixel (cached): in all, or per channel (R,G,B)");
-  cmd->add_option("--width", args->width, "Image width (default 64)")->check(CLI::Range(1, 4096));
-  cmd->add_option("--height", args->height, "Image height (default 32)")
-      ->check(CLI::Range(1, 4096));
+                  fmt::format("Reference paths per pixel, in all or per channel (R,G,B) (default: "
+                              "the cached reference of the view with the most paths, else {})",
+                              kDefaultPaths));
+  cmd->add_option("--width", args->width, "Image width")
+      ->check(CLI::Range(1, 4096))
+      ->capture_default_str();
+  cmd->add_option("--height", args->height, "Image height")
+      ->check(CLI::Range(1, 4096))
+      ->capture_default_str();
   cmd->add_option("--out", args->out, "Folder for technique, reference and error images");
+  cmd->add_flag("--quiet", args->quiet, "No progress and no word of references to render");
+  cmd->footer(
+      fmt::format("References are cached in {} (PLANET_CACHE_DIR=data uses the shipped "
+                  "ones); one not cached is rendered first, after saying what it costs.",
+                  reference_cache_dir().string()));
   cmd->callback([args] { run_accuracy(*args); });
 }
 

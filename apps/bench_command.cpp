@@ -11,9 +11,10 @@
 namespace planet::apps {
 
 void add_bench_command(CLI::App& app) {
-  CLI::App* cmd = app.add_subcommand(
-      "bench", "Run the speed benchmarks (Google Benchmark; its flags follow, "
-               "e.g. planet bench --benchmark_filter=Hillaire)");
+  CLI::App* cmd =
+      app.add_subcommand("bench",
+                         "Run the speed benchmarks (Google Benchmark; its flags follow, "
+                         "e.g. planet bench --benchmark_filter=Hillaire)");
   // Everything after `bench` goes to Google Benchmark as it is.
   cmd->prefix_command();
   cmd->callback([cmd] {

@@ -39,7 +39,8 @@ void run(const ProbeGroundArgs& args) {
 void add_probe_ground_command(CLI::App& probe) {
   auto args = std::make_shared<ProbeGroundArgs>();
   CLI::App* cmd = probe.add_subcommand("ground", "The terrain's height under a place");
-  cmd->add_option("--planet", args->planet, "Body name or file (earth, mars, asteroid)");
+  cmd->add_option("--planet", args->planet, "Body name or file (earth, mars, asteroid)")
+      ->capture_default_str();
   cmd->add_option("--lat", args->lat_deg, "Latitude, degrees")
       ->required()
       ->check(CLI::Range(-90.0, 90.0));

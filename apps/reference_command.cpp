@@ -2,13 +2,15 @@
 // linear EXR (and a tone-mapped PNG beside it), through the reference cache.
 #include "apps/commands.h"
 #include "core/error.h"
+#include "core/interrupt.h"
+#include "core/paths.h"
+#include "core/progress.h"
 #include "core/tone_map.h"
 #include "lab/accuracy.h"
 #include "lab/reference_cache.h"
 
 #include <fmt/format.h>
 
-#include <unistd.h>
 #include <array>
 #include <chrono>
 #include <cstdio>
@@ -35,6 +37,7 @@ void run_reference(const ReferenceArgs& args) {
   if (args.scene.empty() || args.out.empty()) {
     throw InputError("reference: --scene and --out are required (--list shows the scenes)");
   }
+  // Every input, and where the image goes, before the render.
   Scene scene = find_scene(args.scene);
   if (args.width > 0) scene.width = args.width;
   if (args.height > 0) scene.height = args.height;
@@ -42,23 +45,42 @@ void run_reference(const ReferenceArgs& args) {
   PathBudget budget = PathBudget::parse(args.paths);
   Body body = scene_body(scene);
   AtmosphereModel model = scene_atmosphere(scene, body);
-  std::filesystem::path cached = reference_cache_file(scene, model, budget, mode);
-  bool was_cached = std::filesystem::exists(cached);
-  bool terminal = isatty(fileno(stderr)) && !args.quiet;
-  auto start = std::chrono::steady_clock::now();
-  ReferenceRender render = reference_render(scene, budget, mode, [&](double done) {
-    if (terminal) std::fprintf(stderr, "\rreference %s: %3.0f%%", scene.name.c_str(), 100 * done);
-  });
-  const ImageRGB& image = render.image;
-  if (terminal && !was_cached) std::fprintf(stderr, "\n");
-  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  budget.lane_paths(make_medium(model, mode).channels.size());
   std::filesystem::path out(args.out);
-  if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
+  OutputFolder folder(out.has_parent_path() ? out.parent_path() : ".", "--out");
+  std::filesystem::path cached = reference_cache_file(scene, model, budget, mode);
+  bool was_cached = reference_cached(scene, budget, mode);
+  if (!was_cached && !args.quiet) {
+    RenderCost cost = estimate_reference_cost(scene, budget, mode);
+    std::fprintf(stderr, "planet: %s\n",
+                 describe_uncached_reference(scene, budget, mode, cost).c_str());
+  }
+  auto start = std::chrono::steady_clock::now();
+  double pixels = double(scene.width) * scene.height;
+  Progress progress("reference " + scene.name, pixels * budget.spp, "path", args.quiet);
+  InterruptScope interrupt;
+  ReferenceRender render;
+  bool first = true;
+  auto on_progress = [&](double done) {
+    if (first) progress.begin_at(done * pixels * budget.spp);  // what it goes on from
+    first = false;
+    progress.update(done * pixels * budget.spp);
+  };
+  try {
+    render = reference_render(scene, budget, mode, on_progress, &InterruptScope::flag());
+  } catch (const ReferenceInterrupted& e) {
+    progress.finish();
+    std::fprintf(stderr, "planet: %s\n", e.what());
+    std::exit(kInterruptedExitStatus);
+  }
+  progress.finish();
+  const ImageRGB& image = render.image;
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   write_exr(out, image);
   std::filesystem::path png = std::filesystem::path(out).replace_extension(".png");
   write_tone_mapped_png(png, image, scene.exposure);
-  double paths = double(scene.width) * scene.height * budget.spp;
-  double traced = paths * (1.0 - render.started_share);
+  folder.keep();
+  double traced = pixels * budget.spp * (1.0 - render.started_share);
   std::printf("%s: %dx%d, %s spp, %s, %s in %.1f s (%.3g paths/s)\n", scene.name.c_str(),
               scene.width, scene.height, budget.label().c_str(), args.mode.c_str(),
               was_cached ? "from the cache" : "rendered", seconds,
@@ -90,10 +112,11 @@ void add_reference_command(CLI::App& app) {
                   "larger --spp for the same view starts from the sums of a smaller "
                   "one.",
                   reference_cache_dir().string()));
-  cmd->add_option("--scene", args->scene, "Canonical scene name (see --list)");
+  cmd->add_option("--scene", args->scene, "Canonical scene name (see --list); required");
   cmd->add_option("--spp", args->paths,
                   "Paths per pixel: in all (98304), or per channel (32768,131072,524288)");
-  cmd->add_option("--out", args->out, "Output EXR (a tone-mapped PNG is written beside it)");
+  cmd->add_option("--out", args->out,
+                  "Output EXR (a tone-mapped PNG is written beside it); required");
   cmd->add_option("--mode", args->mode, "rgb (the techniques' 3 wavelengths) or spectral");
   cmd->add_option("--width", args->width, "Image width (default: the scene's, 128)")
       ->check(CLI::Range(1, 8192));

@@ -19,15 +19,30 @@ Progress::Progress(std::string label, double total, std::string unit, bool quiet
 
 Progress::~Progress() { finish(); }
 
+void Progress::begin_at(double done) {
+  base_ = done;
+  start_ = std::chrono::steady_clock::now();
+}
+
 void Progress::update(double done) {
   if (quiet_ || total_ <= 0) return;
   double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
-  double rate = done / std::max(elapsed, 1e-9);
-  double left = done > 0 ? (total_ - done) / rate : 0.0;
-  std::string line = unit_.empty() ? fmt::format("{}: {:3.0f}%  {:.0f} s left", label_,
-                                                 100.0 * done / total_, left)
-                                   : fmt::format("{}: {} {:g}/{:g}  {:.1f} {}s/s  {:.0f} s left",
-                                                 label_, unit_, done, total_, rate, unit_, left);
+  double rate = (done - base_) / std::max(elapsed, 1e-9);
+  double left = rate > 0 ? (total_ - done) / rate : 0.0;
+  // Nothing is known of the time left before anything is done.
+  std::string time_left = rate > 0 ? fmt::format("  {:.0f} s left", left) : std::string();
+  std::string rate_text = rate > 0 ? fmt::format("  {:.3g} {}s/s", rate, unit_) : std::string();
+  std::string line;
+  if (unit_.empty()) {
+    line = fmt::format("{}: {:3.0f}%{}", label_, 100.0 * done / total_, time_left);
+  } else if (total_ <= 1e4) {
+    line = fmt::format("{}: {} {:g}/{:g}  {:.1f} {}s/s{}", label_, unit_, done, total_, rate, unit_,
+                       time_left);
+  } else {
+    // Large counts (paths) as a share and a rate.
+    line = fmt::format("{}: {:3.0f}% of {:.3g} {}s{}{}", label_, 100.0 * done / total_, total_,
+                       unit_, rate_text, time_left);
+  }
   if (terminal_) {
     std::fprintf(stderr, "\r%s   ", line.c_str());
     std::fflush(stderr);

@@ -17,6 +17,9 @@ class Progress {
   Progress(const Progress&) = delete;
   Progress& operator=(const Progress&) = delete;
 
+  // A job that goes on from earlier work starts with this much done: the
+  // rate and the time left count from here.
+  void begin_at(double done);
   // `done` of the total so far.
   void update(double done);
   // Ends the line on a terminal; the last update should have been the total.
@@ -27,6 +30,7 @@ class Progress {
   double total_;
   bool quiet_, terminal_, open_ = false;
   int tenths_shown_ = -1;
+  double base_ = 0;
   std::chrono::steady_clock::time_point start_;
 };
 

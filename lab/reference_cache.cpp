@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "core/hash.h"
+#include "core/parallel.h"
 
 #include <fmt/format.h>
 
@@ -149,7 +150,8 @@ std::optional<std::pair<std::filesystem::path, RenderSums>> find_start(
 }  // namespace
 
 ReferenceRender reference_render(const Scene& scene, const PathBudget& paths, ReferenceMode mode,
-                                 const std::function<void(double)>& progress) {
+                                 const std::function<void(double)>& progress,
+                                 const std::atomic<bool>* cancel) {
   Body body = scene_body(scene);
   AtmosphereModel model = scene_atmosphere(scene, body);
   std::filesystem::path file = reference_cache_file(scene, model, paths, mode);
@@ -166,7 +168,12 @@ ReferenceRender reference_render(const Scene& scene, const PathBudget& paths, Re
   settings.paths = paths;
   settings.seed = scene.seed();
   settings.progress = progress;
-  settings.checkpoint = [&](const RenderSums& sums) { write_sums(sums_file, view_key, sums); };
+  settings.cancel = cancel;
+  bool checkpointed = false;
+  settings.checkpoint = [&](const RenderSums& sums) {
+    write_sums(sums_file, view_key, sums);
+    checkpointed = true;
+  };
   auto start = find_start(scene, view_key, mode, lane_paths);
   double share = 0.0;
   if (start) {
@@ -175,7 +182,21 @@ ReferenceRender reference_render(const Scene& scene, const PathBudget& paths, Re
     for (int n : lane_paths) all += n;
     share = double(start->second.traced()) / all;
   }
-  ReferenceImage image = render_reference(medium, reference_view(scene, body, model), settings);
+  ReferenceImage image;
+  try {
+    image = render_reference(medium, reference_view(scene, body, model), settings);
+  } catch (const RenderInterrupted& e) {
+    std::string kept =
+        checkpointed ? sums_file.string() : (start ? start->first.string() : std::string());
+    if (kept.empty()) {
+      throw ReferenceInterrupted(fmt::format(
+          "interrupted before the first checkpoint of {}: no paths were kept", scene.name));
+    }
+    throw ReferenceInterrupted(
+        fmt::format("interrupted: {:.1f}% of the paths of {} are kept in {}; run the same command "
+                    "again to go on",
+                    100.0 * e.kept_share, scene.name, kept));
+  }
   ReferenceRender out{to_image_rgb(image),
                       {image.width, image.height, image.noise},
                       start ? start->first : std::filesystem::path(),
@@ -184,6 +205,100 @@ ReferenceRender reference_render(const Scene& scene, const PathBudget& paths, Re
   write_exr(noise_file, out.noise);
   write_exr(file, out.image);
   return out;
+}
+
+bool reference_cached(const Scene& scene, const PathBudget& paths, ReferenceMode mode) {
+  AtmosphereModel model = scene_atmosphere(scene, scene_body(scene));
+  std::filesystem::path file = reference_cache_file(scene, model, paths, mode);
+  return std::filesystem::exists(file) && std::filesystem::exists(reference_noise_file(file));
+}
+
+std::optional<PathBudget> best_cached_budget(const Scene& scene, ReferenceMode mode) {
+  AtmosphereModel model = scene_atmosphere(scene, scene_body(scene));
+  std::string prefix = fmt::format("{}-{}x{}-", scene.name, scene.width, scene.height);
+  std::string suffix = fmt::format("spp-{}-", to_string(mode));
+  std::optional<PathBudget> best;
+  double best_paths = 0;
+  std::error_code ec;
+  for (const auto& entry : std::filesystem::directory_iterator(reference_cache_dir(), ec)) {
+    std::string name = entry.path().filename().string();
+    if (name.rfind(prefix, 0) != 0 || name.ends_with(".noise.exr") || !name.ends_with(".exr")) {
+      continue;
+    }
+    size_t at = name.find(suffix, prefix.size());
+    if (at == std::string::npos) continue;
+    PathBudget budget;
+    try {
+      budget = PathBudget::parse(name.substr(prefix.size(), at - prefix.size()));
+    } catch (const InputError&) {
+      continue;  // not a name the cache writes
+    }
+    // Of this view and model (the key says so), and whole.
+    if (reference_cache_file(scene, model, budget, mode).filename() != name) continue;
+    if (!std::filesystem::exists(reference_noise_file(entry.path()))) continue;
+    double paths = budget.per_channel.empty() ? double(budget.spp) : 0.0;
+    for (int n : budget.per_channel) paths += n;
+    if (!best || paths > best_paths) {
+      best = budget;
+      best_paths = paths;
+    }
+  }
+  return best;
+}
+
+RenderCost estimate_reference_cost(const Scene& scene, const PathBudget& paths,
+                                   ReferenceMode mode) {
+  Body body = scene_body(scene);
+  AtmosphereModel model = scene_atmosphere(scene, body);
+  Medium medium = make_medium(model, mode);
+  const size_t channels = medium.channels.size();
+  std::vector<int> lanes = paths.lane_paths(channels);
+  double per_pixel = 0;
+  for (int n : lanes) per_pixel += n;
+  // A trial with the budget's proportions between channels, about 64
+  // paths per pixel in all.
+  double scale = std::min(1.0, 64.0 / per_pixel);
+  std::vector<int> trial_counts;
+  for (size_t c = 0; c < channels; ++c) {
+    double n = paths.per_channel.empty() ? double(paths.spp) / double(channels)
+                                         : double(paths.per_channel[c]);
+    trial_counts.push_back(std::max(kReplicates, int(std::lround(n * scale))));
+  }
+  ReferenceSettings trial;
+  trial.paths = PathBudget(trial_counts);
+  trial.seed = scene.seed();
+  ReferenceImage image = render_reference(medium, reference_view(scene, body, model), trial);
+  double trial_paths = double(image.paths);
+  double pixels = double(scene.width) * double(scene.height);
+  RenderCost cost;
+  cost.threads = thread_count(0);
+  cost.paths = per_pixel * pixels;
+  std::string view_key = reference_view_key(scene, model, mode);
+  if (auto start = find_start(scene, view_key, mode, lanes)) {
+    cost.already_done = double(start->second.traced()) / per_pixel;
+  }
+  double rate = trial_paths / std::max(image.trace_seconds, 1e-6);
+  cost.seconds =
+      (image.seconds - image.trace_seconds) + cost.paths * (1.0 - cost.already_done) / rate;
+  return cost;
+}
+
+std::string describe_uncached_reference(const Scene& scene, const PathBudget& paths,
+                                        ReferenceMode mode, const RenderCost& cost) {
+  auto duration = [](double s) {
+    return s < 90     ? fmt::format("{:.0f} s", s)
+           : s < 5400 ? fmt::format("{:.1f} min", s / 60)
+                      : fmt::format("{:.1f} h", s / 3600);
+  };
+  std::string went_on =
+      cost.already_done > 0
+          ? fmt::format(", going on from sums that hold {:.1f}% of it", 100.0 * cost.already_done)
+          : "";
+  return fmt::format(
+      "no reference of {} ({}x{}, {} paths per pixel, {}) is cached in {}: rendering it{} takes "
+      "about {} on {} threads; it is cached for next time, and Ctrl-C keeps what is done",
+      scene.name, scene.width, scene.height, paths.label(), to_string(mode),
+      reference_cache_dir().string(), went_on, duration(cost.seconds), cost.threads);
 }
 
 ImageRGB reference_image(const Scene& scene, const PathBudget& paths, ReferenceMode mode,

@@ -11,8 +11,11 @@
 #include "core/image_io.h"
 #include "lab/scene.h"
 
+#include <atomic>
 #include <filesystem>
 #include <functional>
+#include <optional>
+#include <stdexcept>
 #include <string>
 
 namespace planet {
@@ -57,10 +60,40 @@ struct ReferenceRender {
 
 // The scene's reference and its noise: read from the cache, or rendered on
 // all cores (from the furthest sums there that fit) and cached. `progress`
-// sees the fraction done while rendering.
+// sees the fraction done while rendering; `cancel` (core/interrupt.h)
+// stops it with ReferenceInterrupted, its last checkpoint kept.
 ReferenceRender reference_render(const Scene& scene, const PathBudget& paths,
                                  ReferenceMode mode = ReferenceMode::kRgb,
-                                 const std::function<void(double)>& progress = {});
+                                 const std::function<void(double)>& progress = {},
+                                 const std::atomic<bool>* cancel = nullptr);
+
+// A render stopped part-way: what it kept and how to go on, as one line.
+class ReferenceInterrupted : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Whether the scene's reference at this budget is in the cache.
+bool reference_cached(const Scene& scene, const PathBudget& paths, ReferenceMode mode);
+// The budget of the cached reference of this view with the most paths, if
+// any is cached (the shipped ones: PLANET_CACHE_DIR=data).
+std::optional<PathBudget> best_cached_budget(const Scene& scene, ReferenceMode mode);
+
+// What rendering a reference would cost on this machine, from a short trial
+// render of the same view (about two seconds, most of it the tracer's
+// tables): seconds on all cores, paths in all, and the part already done
+// in sums the render would go on from.
+struct RenderCost {
+  double seconds = 0;
+  double paths = 0;
+  double already_done = 0;  // fraction
+  int threads = 0;
+};
+RenderCost estimate_reference_cost(const Scene& scene, const PathBudget& paths, ReferenceMode mode);
+// "no reference of earth_noon (32x16, 4096 paths per pixel, rgb) is cached
+// in DIR: rendering it takes about 3.2 min on 2 threads ..."
+std::string describe_uncached_reference(const Scene& scene, const PathBudget& paths,
+                                        ReferenceMode mode, const RenderCost& cost);
 // The reference image alone.
 ImageRGB reference_image(const Scene& scene, const PathBudget& paths,
                          ReferenceMode mode = ReferenceMode::kRgb,

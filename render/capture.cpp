@@ -4,6 +4,7 @@
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/image_io.h"
+#include "core/interrupt.h"
 #include "core/progress.h"
 #include "render/frame.h"
 #include "terrain/ground.h"
@@ -15,15 +16,10 @@
 
 #include <algorithm>
 #include <chrono>
-#include <csignal>
 
 namespace planet {
 
 namespace {
-
-// Set by SIGINT: the frame in progress is finished, then the capture stops.
-volatile std::sig_atomic_t g_interrupted = 0;
-extern "C" void on_interrupt(int) { g_interrupted = 1; }
 
 // Generous: the deepest view (2 m above mountains) builds a few hundred
 // tiles, seconds on one core.
@@ -137,12 +133,11 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
 
   CaptureResult result;
   Progress progress("capture " + script.name, end - first, "frame", !options.progress);
-  g_interrupted = 0;
-  auto previous_handler = std::signal(SIGINT, on_interrupt);
+  // Ctrl-C: the frame in progress is finished, then the capture stops.
+  InterruptScope interrupt;
   auto start = std::chrono::steady_clock::now();
   for (int frame = first; frame < end; ++frame) {
-    if (g_interrupted) {
-      std::signal(SIGINT, previous_handler);
+    if (interrupt.interrupted()) {
       progress.finish();
       throw CaptureInterrupted(
           fmt::format("interrupted: frames {} to {} are complete in {}; resume with --frames {}:{}",
@@ -180,7 +175,6 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
       {"wall_seconds", result.wall_seconds},
   };
   write_file_atomically(finished_marker, summary.dump(2) + "\n");
-  std::signal(SIGINT, previous_handler);
   return result;
 }
 

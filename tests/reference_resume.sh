@@ -23,5 +23,27 @@ done
 ls "$work"/b/reference/*.sums > /dev/null 2>&1 || fail "the finished render left no sums"
 render a 20000,600,20000 > "$work/again.txt" || fail "the cached render failed"
 grep -q "from the cache" "$work/again.txt" || fail "the cached render was not read back"
-[ "$failed" -eq 0 ] && echo "ok: went on from the smaller render to the same bytes"
+
+# Ctrl-C: the render stops at once, keeps its last checkpoint, says how to
+# go on and exits with 130; the same command goes on from there.
+PLANET_CACHE_DIR="$work/c" "$planet" reference --scene earth_sunset --width 4 --height 2 \
+  --spp 2000000 --out "$work/c/out.exr" > /dev/null 2> "$work/cut.txt" &
+pid=$!
+for _ in $(seq 1 600); do
+  ls "$work"/c/reference/*.sums > /dev/null 2>&1 && break
+  sleep 0.1
+done
+kill -INT "$pid"
+wait "$pid"; rc=$?
+[ "$rc" -eq 130 ] || fail "the interrupted render exited $rc: $(cat "$work/cut.txt")"
+grep -q "interrupted: .*% of the paths of earth_sunset are kept in .*\.sums; run the same command again to go on" \
+  "$work/cut.txt" || fail "no word of what was kept: $(cat "$work/cut.txt")"
+grep -q "is cached in .*takes about .* on .* threads" "$work/cut.txt" ||
+  fail "no word before the render of what it would cost: $(cat "$work/cut.txt")"
+[ -e "$work/c/out.exr" ] && fail "an interrupted render wrote its image"
+PLANET_CACHE_DIR="$work/c" timeout -s INT 6 "$planet" reference --scene earth_sunset --width 4 \
+  --height 2 --spp 2000000 --out "$work/c/out.exr" > /dev/null 2> "$work/again_cut.txt"
+grep -q "going on from sums that hold" "$work/again_cut.txt" ||
+  fail "the second run did not go on from the sums: $(cat "$work/again_cut.txt")"
+[ "$failed" -eq 0 ] && echo "ok: went on from the smaller render to the same bytes, and Ctrl-C kept its paths"
 exit $failed

@@ -67,10 +67,21 @@ ReferenceImage render_reference(const Medium& m, const ReferenceView& view,
   for (int n : lane_paths) total_paths += uint64_t(n);
   const uint64_t traced_before = uint64_t(sums.traced());
   uint64_t traced = traced_before;
-  const int chunk = std::max(settings.chunk_paths, 1);
+  const int max_chunk = std::max(settings.chunk_paths, 1);
+  // The first chunk is small; later ones are sized to take about
+  // checkpoint_seconds, so that an interrupted render loses little.
+  int chunk = std::min(max_chunk, 256);
+  double trace_seconds = 0;
+  auto cancelled = [&] {
+    return settings.cancel && settings.cancel->load(std::memory_order_relaxed);
+  };
   // Chunk by chunk: up to `chunk` more paths in every lane of every pixel,
   // then a checkpoint.
   while (traced < total_paths) {
+    if (cancelled()) throw RenderInterrupted(double(traced) / double(total_paths));
+    // The sums as the last checkpoint has them: a chunk cut short is undone.
+    const std::vector<double> chunk_start = settings.cancel ? sums.sum : std::vector<double>();
+    auto chunk_began = std::chrono::steady_clock::now();
     std::vector<int> until(lanes);
     uint64_t chunk_total = 0;
     for (size_t lane = 0; lane < lanes; ++lane) {
@@ -88,6 +99,7 @@ ReferenceImage render_reference(const Medium& m, const ReferenceView& view,
           uint64_t seed = reference::mix64(settings.seed ^ reference::mix64(pixel * lanes + lane));
           double& sum = sums.sum[pixel * lanes + lane];
           for (int i = sums.done[lane]; i < until[lane]; ++i) {
+            if (cancelled()) return;
             reference::PathSampler sampler(seed, uint32_t(i));
             sum += trace_path(table, camera, dir, sun, settings.trace, sampler);
           }
@@ -102,9 +114,18 @@ ReferenceImage render_reference(const Medium& m, const ReferenceView& view,
       };
     }
     parallel_for(view.height, settings.threads, trace_row, on_rows);
+    double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - chunk_began).count();
+    if (cancelled()) {
+      sums.sum = chunk_start;
+      throw RenderInterrupted(double(traced) / double(total_paths));
+    }
+    trace_seconds += seconds;
     sums.done = until;
     traced += chunk_total;
     if (settings.checkpoint) settings.checkpoint(sums);
+    double scale = std::clamp(settings.checkpoint_seconds / std::max(seconds, 1e-3), 0.25, 4.0);
+    chunk = std::clamp(int(chunk * scale), 1, max_chunk);
   }
   if (settings.progress) settings.progress(1.0);
 
@@ -124,6 +145,7 @@ ReferenceImage render_reference(const Medium& m, const ReferenceView& view,
   }
   image.paths = pixels * (total_paths - traced_before);
   image.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  image.trace_seconds = trace_seconds;
   return image;
 }
 

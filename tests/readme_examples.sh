@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# The README's examples run as written: every `build/planet ...` line of
+# its code blocks that names no placeholder (FILE, DIR, [options]), but the
+# window (fly) and the long benchmarks, runs from a scratch folder with the
+# shipped data, exits 0 within two minutes and prints something.
+set -uo pipefail
+planet="$1"; source="$2"
+work="$(mktemp -d /tmp/planet-readme.XXXXXX)"
+trap 'rm -rf "$work"' EXIT
+export XDG_CACHE_HOME="$work/cache"  # a reference rendered here stays here
+failed=0; ran=0
+while IFS= read -r line; do
+  case "$line" in *" fly"*|*" bench"*) continue ;; esac
+  if echo "$line" | grep -qE '\[|\b(FILE|DIR|NAME|DEG|UTC|MIB|PX|M)\b'; then continue; fi
+  command="${line//build\/planet/$planet}"
+  command="${command//PLANET_CACHE_DIR=data/PLANET_CACHE_DIR=$source/data}"
+  ( cd "$work" && timeout 120 bash -c "$command" ) > "$work/out.txt" 2> "$work/err.txt"
+  rc=$?
+  ran=$((ran + 1))
+  if [ "$rc" -ne 0 ] || [ ! -s "$work/out.txt" ]; then
+    echo "FAIL (exit $rc): $line"; cat "$work/err.txt"; failed=1
+  else
+    echo "ok: $line"
+  fi
+done < <(awk '/^```/ { block = !block; next }
+              block && /^(PLANET_CACHE_DIR=data )?build\/planet / {
+                line = $0
+                while (line ~ /\\$/) { sub(/\\$/, "", line); getline more; line = line more }
+                print line }' "$source/README.md")
+[ "$ran" -ge 6 ] || { echo "FAIL: only $ran examples found"; failed=1; }
+exit $failed
