@@ -10,20 +10,42 @@ namespace planet {
 
 namespace {
 
-// `rgb` holds RGB rows top-down.
+void add_attribute(OIIO::ImageSpec& spec, const ImageAttribute& a) {
+  if (const double* d = std::get_if<double>(&a.value)) {
+    spec.attribute(a.name, OIIO::TypeDesc::DOUBLE, d);
+  } else if (const float* f = std::get_if<float>(&a.value)) {
+    spec.attribute(a.name, *f);
+  } else if (const std::string* s = std::get_if<std::string>(&a.value)) {
+    spec.attribute(a.name, *s);
+  } else if (const glm::dvec3* v = std::get_if<glm::dvec3>(&a.value)) {
+    spec.attribute(a.name, OIIO::TypeDesc(OIIO::TypeDesc::DOUBLE, OIIO::TypeDesc::VEC3), v);
+  } else {
+    // GLM stores columns one after the other: the rows of the transpose,
+    // which is the row-vector matrix OpenEXR (Imath) stores.
+    spec.attribute(a.name, OIIO::TypeMatrix44, &std::get<glm::mat4>(a.value)[0][0]);
+  }
+}
+
+// `pixels` holds `channels` values a pixel, rows top-down.
 template <typename T>
-void write_rgb(const std::filesystem::path& file, int width, int height, const std::vector<T>& rgb,
-               OIIO::TypeDesc type) {
+void write_image(const std::filesystem::path& file, int width, int height, int channels,
+                 const std::vector<T>& pixels, OIIO::TypeDesc type, const ExrExtras& extras = {}) {
   // OIIO picks the format from the extension, so the temporary keeps it.
   std::filesystem::path partial = partial_file(file);
   auto out = OIIO::ImageOutput::create(partial.string());
   if (!out) throw SystemError(fmt::format("{}: {}", file.string(), OIIO::geterror()));
-  OIIO::ImageSpec spec(width, height, 3, type);
+  OIIO::ImageSpec spec(width, height, channels, type);
+  if (channels == 4) {
+    spec.channelnames = {"R", "G", "B", "Z"};
+    spec.z_channel = 3;
+  }
   if (type == OIIO::TypeDesc::FLOAT) spec.attribute("compression", "zip");
   // OpenEXR files otherwise get the wall-clock time (capDate), and the same
   // capture must give the same bytes.
   spec.attribute("DateTime", "2000:01:01 00:00:00");
-  if (!out->open(partial.string(), spec) || !out->write_image(type, rgb.data()) || !out->close()) {
+  for (const ImageAttribute& a : extras.attributes) add_attribute(spec, a);
+  if (!out->open(partial.string(), spec) || !out->write_image(type, pixels.data()) ||
+      !out->close()) {
     std::string error = out->geterror();
     std::filesystem::remove(partial);
     throw SystemError(fmt::format("{}: cannot write: {}", file.string(), error));
@@ -34,17 +56,31 @@ void write_rgb(const std::filesystem::path& file, int width, int height, const s
 }  // namespace
 
 void write_exr(const std::filesystem::path& file, const ImageRGB& image) {
-  write_rgb(file, image.width, image.height, image.pixels, OIIO::TypeDesc::FLOAT);
+  write_image(file, image.width, image.height, 3, image.pixels, OIIO::TypeDesc::FLOAT);
 }
 
 void write_exr(const std::filesystem::path& file, int width, int height,
-               const std::vector<float>& rgba) {
-  write_rgb(file, width, height, rgb_rows_from_gl(width, height, rgba), OIIO::TypeDesc::FLOAT);
+               const std::vector<float>& rgba, const ExrExtras& extras) {
+  std::vector<float> rgb = rgb_rows_from_gl(width, height, rgba);
+  if (extras.depth.empty()) {
+    write_image(file, width, height, 3, rgb, OIIO::TypeDesc::FLOAT, extras);
+    return;
+  }
+  std::vector<float> rgbz(size_t(width) * size_t(height) * 4);
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
+      size_t i = size_t(y) * size_t(width) + size_t(x);
+      for (size_t c = 0; c < 3; ++c) rgbz[4 * i + c] = rgb[3 * i + c];
+      // GL's rows bottom-up, as the colour came.
+      rgbz[4 * i + 3] = extras.depth[size_t(height - 1 - y) * size_t(width) + size_t(x)];
+    }
+  }
+  write_image(file, width, height, 4, rgbz, OIIO::TypeDesc::FLOAT, extras);
 }
 
 void write_png_rgb8(const std::filesystem::path& file, int width, int height,
                     const std::vector<uint8_t>& rgb) {
-  write_rgb(file, width, height, rgb, OIIO::TypeDesc::UINT8);
+  write_image(file, width, height, 3, rgb, OIIO::TypeDesc::UINT8);
 }
 
 void write_png(const std::filesystem::path& file, int width, int height,

@@ -5,7 +5,10 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <variant>
 #include <vector>
+
+#include <glm/glm.hpp>
 
 namespace planet {
 
@@ -35,11 +38,29 @@ inline ImageRGB image_from_gl(int width, int height, const std::vector<float>& r
   return {width, height, rgb_rows_from_gl(width, height, rgba)};
 }
 
+// A named value an EXR carries in its header: an OpenEXR standard
+// attribute (capDate, latitude, worldToCamera, ...) or one of our own
+// ("planet:..."). Matrices map column vectors, as GLM's do.
+struct ImageAttribute {
+  std::string name;
+  std::variant<double, float, std::string, glm::dvec3, glm::mat4> value;
+};
+
+// What a frame's EXR holds beyond its colour: header attributes, and a
+// depth channel Z (distance along each pixel's ray, metres; +inf where the
+// ray meets nothing), GL rows bottom-up like the colour. Without "DateTime"
+// among the attributes the header gets a fixed date, never the wall
+// clock's: the same frame gives the same bytes.
+struct ExrExtras {
+  std::vector<ImageAttribute> attributes;
+  std::vector<float> depth;  // empty: no Z channel
+};
+
 // 32-bit float RGB EXR.
 void write_exr(const std::filesystem::path& file, const ImageRGB& image);
 // `rgba` holds width*height RGBA floats with rows bottom-up (GL order).
 void write_exr(const std::filesystem::path& file, int width, int height,
-               const std::vector<float>& rgba);
+               const std::vector<float>& rgba, const ExrExtras& extras = {});
 // `rgb` holds width*height RGB8, rows top-down.
 void write_png_rgb8(const std::filesystem::path& file, int width, int height,
                     const std::vector<uint8_t>& rgb);

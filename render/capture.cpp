@@ -71,6 +71,73 @@ TechniqueChoice script_technique(const FlightScript& script) {
   }
 }
 
+namespace {
+
+// The sidecar's fields as "planet:" header attributes: nested objects
+// joined with ':', numbers as doubles, three numbers as a vector, anything
+// else as its JSON text. But for those that are not the frame's own: its
+// timings (which differ run to run) and what the tile cache holds (which
+// depends on the frames rendered before it, so on the --frames slice).
+void add_sidecar_attributes(const nlohmann::json& j, const std::string& prefix,
+                            std::vector<ImageAttribute>& out) {
+  for (const auto& [key, value] : j.items()) {
+    if (prefix == "planet:" && key == "gpu_ms") continue;
+    if (prefix == "planet:terrain:" && (key == "tiles_resident" || key == "bytes_resident")) {
+      continue;
+    }
+    std::string name = prefix + key;
+    if (value.is_object()) {
+      add_sidecar_attributes(value, name + ":", out);
+    } else if (value.is_number()) {
+      out.push_back({name, value.get<double>()});
+    } else if (value.is_string()) {
+      out.push_back({name, value.get<std::string>()});
+    } else if (value.is_array() && value.size() == 3 && value[0].is_number()) {
+      out.push_back({name, glm::dvec3(value[0].get<double>(), value[1].get<double>(),
+                                      value[2].get<double>())});
+    } else {
+      out.push_back({name, value.dump()});
+    }
+  }
+}
+
+// What a compositor reads from a frame: the OpenEXR standard attributes of
+// place, time and camera, from the frame's own state (so that the bytes
+// stay the same run to run), the sidecar as "planet:" attributes, and the
+// depth channel.
+ExrExtras frame_exr_extras(const FlightScript& script, const FlightPath& path, double t,
+                           const Camera& camera, const nlohmann::json& sidecar,
+                           const FrameRenderer& renderer) {
+  ExrExtras extras;
+  auto& a = extras.attributes;
+  if (script.has_clock) {
+    // capDate is local time as "YYYY:MM:DD HH:MM:SS"; the clock is UTC.
+    std::string utc = format_utc(path.utc_at(t));  // 2026-06-21T12:00:00.000Z
+    std::string date = utc.substr(0, 19);
+    date[4] = date[7] = ':';
+    date[10] = ' ';
+    a.push_back({"DateTime", date});
+    a.push_back({"utcOffset", 0.0f});
+  }
+  Geodetic g = Geodesy(script.body.shape).geodetic_from_body(camera.pos_body);
+  a.push_back({"latitude", float(glm::degrees(g.lat))});
+  a.push_back({"longitude", float(glm::degrees(g.lon))});
+  a.push_back({"altitude", float(g.height)});
+  // The body frame is the world: camera from body, then clip from camera.
+  glm::dmat3 camera_from_body = glm::mat3_cast(glm::conjugate(camera.body_from_camera));
+  glm::dmat4 world_to_camera(camera_from_body);
+  world_to_camera[3] = glm::dvec4(-(camera_from_body * camera.pos_body), 1.0);
+  glm::mat4 clip = clip_from_view_reversed_z(camera.vertical_fov,
+                                             double(script.width) / script.height, camera.near);
+  a.push_back({"worldToCamera", glm::mat4(world_to_camera)});
+  a.push_back({"worldToNDC", clip * glm::mat4(world_to_camera)});
+  add_sidecar_attributes(sidecar, "planet:", a);
+  extras.depth = renderer.read_distance(camera);
+  return extras;
+}
+
+}  // namespace
+
 void check_frames(const FlightScript& script, const CaptureOptions& options) {
   const int total = script.frame_count();
   const int first = options.first_frame;
@@ -150,13 +217,12 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
     glm::dvec3 sun = path.sun_dir_at(t);
     FrameStats stats = renderer.render(camera, sun, exposure);
     std::string stem = fmt::format("frame_{:05d}", frame);
-    write_exr(options.out_dir / (stem + ".exr"), script.width, script.height, renderer.read_hdr());
+    nlohmann::json side = sidecar(script, path, geodesy, frame, t, camera, exposure, sun, stats,
+                                  renderer.terrain_stats());
+    write_exr(options.out_dir / (stem + ".exr"), script.width, script.height, renderer.read_hdr(),
+              frame_exr_extras(script, path, t, camera, side, renderer));
     write_png(options.out_dir / (stem + ".png"), script.width, script.height, renderer.read_ldr());
-    write_file_atomically(options.out_dir / (stem + ".json"),
-                          sidecar(script, path, geodesy, frame, t, camera, exposure, sun, stats,
-                                  renderer.terrain_stats())
-                                  .dump(2) +
-                              "\n");
+    write_file_atomically(options.out_dir / (stem + ".json"), side.dump(2) + "\n");
     if (frame == first) result.first_png = options.out_dir / (stem + ".png");
     result.last_png = options.out_dir / (stem + ".png");
     ++result.frames;

@@ -8,6 +8,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <cmath>
+#include <limits>
 
 namespace planet {
 
@@ -117,6 +118,27 @@ FrameStats FrameRenderer::render(const Camera& camera, const glm::dvec3& sun_dir
 
 std::vector<float> FrameRenderer::read_hdr() const {
   return read_texture_rgba32f(hdr_.id(), width_, height_);
+}
+
+std::vector<float> FrameRenderer::read_distance(const Camera& camera) const {
+  std::vector<float> depth(size_t(width_) * size_t(height_));
+  glGetTextureImage(depth_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+                    GLsizei(depth.size() * sizeof(float)), depth.data());
+  const glm::dmat3 ray_from_ndc = view_ray_from_ndc(camera.vertical_fov, double(width_) / height_);
+  for (int y = 0; y < height_; ++y) {
+    for (int x = 0; x < width_; ++x) {
+      float& d = depth[size_t(y) * size_t(width_) + size_t(x)];
+      if (d <= 0.0f) {
+        d = std::numeric_limits<float>::infinity();
+        continue;
+      }
+      // Reversed Z: view depth = near / depth, times the ray's length per
+      // unit of view depth at the pixel's centre.
+      glm::dvec2 ndc(2.0 * (x + 0.5) / width_ - 1.0, 2.0 * (y + 0.5) / height_ - 1.0);
+      d = float(camera.near / double(d) * glm::length(ray_from_ndc * glm::dvec3(ndc, 1.0)));
+    }
+  }
+  return depth;
 }
 
 std::vector<uint8_t> FrameRenderer::read_ldr() const {

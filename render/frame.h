@@ -54,6 +54,10 @@ class FrameRenderer {
   std::vector<float> read_hdr() const;
   // Tone-mapped sRGB, RGBA8, rows bottom-up.
   std::vector<uint8_t> read_ldr() const;
+  // The distance along each pixel's ray to the surface drawn there, metres
+  // (+inf where there is none), for the last frame of `camera`; rows
+  // bottom-up.
+  std::vector<float> read_distance(const Camera& camera) const;
   GLuint ldr_texture() const { return ldr_.id(); }
 
  private:

@@ -11,6 +11,8 @@ packages=(
   libepoxy-dev libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libglfw3-dev
   # maths, geodesy, geometry, images
   libglm-dev libgeographiclib-dev libosd-dev libopenimageio-dev
+  # OpenImageIO's own oiiotool reads the captured EXRs' metadata in a test
+  openimageio-tools
   # command line, JSON, logging
   libcli11-dev nlohmann-json3-dev libspdlog-dev libfmt-dev
   # HUD

@@ -116,3 +116,34 @@ TEST(ProjectionTest, ReversedZInfiniteFarPlane) {
 
 }  // namespace
 }  // namespace planet
+
+namespace planet {
+namespace {
+
+// The depth channel of a capture: the distance along each pixel's ray.
+// Straight down from 1 km over the smooth ellipsoid it is the height at the
+// centre and the height over the cosine of the ray's angle toward the
+// corners; looking up there is nothing (+inf).
+TEST_F(FrameGLTest, DistanceAlongTheRayIsTheHeightStraightDown) {
+  Geodetic place{glm::radians(46.5), glm::radians(8.0), 1000.0};
+  auto view = view_from_place(body_.shape, place, 0.0, -90.0, 60.0, 40.0, 180.0);
+  renderer_->render(view.camera, view.sun_dir_body, 10.0);
+  std::vector<float> distance = renderer_->read_distance(view.camera);
+  auto at = [&](int x, int y) { return distance[size_t(y) * kSize + size_t(x)]; };
+  // The four pixels round the centre are half a pixel off the axis.
+  double tan_half = std::tan(glm::radians(30.0));
+  double off = tan_half / kSize;
+  double centre = 1000.0 * std::sqrt(1.0 + 2.0 * off * off);
+  EXPECT_NEAR(at(kSize / 2, kSize / 2), centre, 0.002 * centre);
+  // A corner pixel's centre: (1 - 1/n) of the half-field in x and y.
+  double c = tan_half * (1.0 - 1.0 / kSize);
+  double corner = 1000.0 * std::sqrt(1.0 + 2.0 * c * c);
+  // The ellipsoid curves away from the flat plane: a little farther.
+  EXPECT_NEAR(at(0, 0), corner, 0.005 * corner);
+  auto up = view_from_place(body_.shape, place, 0.0, 90.0, 60.0, 40.0, 180.0);
+  renderer_->render(up.camera, up.sun_dir_body, 10.0);
+  for (float d : renderer_->read_distance(up.camera)) ASSERT_TRUE(std::isinf(d) && d > 0);
+}
+
+}  // namespace
+}  // namespace planet
