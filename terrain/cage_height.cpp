@@ -3,6 +3,7 @@
 #include "core/error.h"
 
 #include <fmt/format.h>
+#include <opensubdiv/far/error.h>
 #include <opensubdiv/far/primvarRefiner.h>
 #include <opensubdiv/far/topologyDescriptor.h>
 #include <opensubdiv/far/topologyRefinerFactory.h>
@@ -26,8 +27,29 @@ struct Point {
   void AddWithWeight(const Point& src, double w) { p += w * src.p; }
 };
 
+// OpenSubdiv reports what it rejects (and warns of) through callbacks that
+// print "Error: ..." and "Warning: ..." on their own by default. They are
+// caught here instead, for this thread's cage: an error becomes the reason
+// in our one line, a warning is dropped (what it warns of is checked here
+// before, or does not matter to a limit surface).
+thread_local std::string t_opensubdiv_error;
+
+extern "C" void on_opensubdiv_error(Far::ErrorType, const char* message) {
+  if (!t_opensubdiv_error.empty()) t_opensubdiv_error += "; ";
+  t_opensubdiv_error += message;
+}
+
+extern "C" void on_opensubdiv_warning(const char*) {}
+
 std::unique_ptr<Far::TopologyRefiner> make_refiner(const ObjCage& cage, int level,
                                                    const std::string& name) {
+  static const bool installed = [] {
+    Far::SetErrorCallback(on_opensubdiv_error);
+    Far::SetWarningCallback(on_opensubdiv_warning);
+    return true;
+  }();
+  (void)installed;
+  t_opensubdiv_error.clear();
   Far::TopologyDescriptor desc;
   desc.numVertices = int(cage.vertices.size());
   desc.numFaces = int(cage.face_sizes.size());
@@ -38,8 +60,11 @@ std::unique_ptr<Far::TopologyRefiner> make_refiner(const ObjCage& cage, int leve
   using Factory = Far::TopologyRefinerFactory<Far::TopologyDescriptor>;
   std::unique_ptr<Far::TopologyRefiner> refiner(
       Factory::Create(desc, Factory::Options(Sdc::SCHEME_CATMARK, options)));
-  if (!refiner) {
-    throw InputError(fmt::format("{}: OpenSubdiv cannot build a Catmull-Clark cage from it", name));
+  if (!refiner || !t_opensubdiv_error.empty()) {
+    std::string reason = t_opensubdiv_error.empty() ? "" : ": " + t_opensubdiv_error;
+    t_opensubdiv_error.clear();
+    throw InputError(
+        fmt::format("{}: OpenSubdiv cannot build a Catmull-Clark cage from it{}", name, reason));
   }
   // Limit positions need the last level's full topology (its vertices'
   // neighbourhoods), which uniform refinement leaves out by default.

@@ -18,7 +18,8 @@ trap 'kill "$xvfb" 2>/dev/null' EXIT
 export DISPLAY="$display"
 for _ in $(seq 1 50); do xdotool getmouselocation >/dev/null 2>&1 && break; sleep 0.1; done
 
-timeout 120 "$planet" fly --size 160x90 --out "$work" > "$work/fly.txt" 2> "$work/fly.err" &
+# The default window, drawn at a tenth of its size to keep llvmpipe quick.
+timeout 120 "$planet" fly --render-scale 0.1 --out "$work" > "$work/fly.txt" 2> "$work/fly.err" &
 fly=$!
 window=""
 for _ in $(seq 1 300); do
@@ -84,4 +85,10 @@ recorded_clock=$(grep -o '"time": [0-9.]*' "$recorded" | tail -1 | cut -d' ' -f2
 echo "recorded $recorded_clock s of flight in $recorded_wall s of wall time"
 awk -v c="$recorded_clock" -v w="$recorded_wall" 'BEGIN { exit !(c > 0.8 * (w - 1)) }' ||
   { echo "FAIL: the clock ran slower than wall time"; exit 1; }
+# The HUD leaves the view free: a corner of it, not a band across it.
+read -r hud_w hud_h win_w win_h < <(sed -n 's/.*the HUD took at most \([0-9]*\) x \([0-9]*\) px of the \([0-9]*\) x \([0-9]*\) window.*/\1 \2 \3 \4/p' "$work/fly.txt")
+[ -n "${hud_w:-}" ] || { echo "FAIL: no word of the HUD's size"; exit 1; }
+echo "the HUD took $hud_w x $hud_h px of the $win_w x $win_h window"
+[ $((hud_w * hud_h * 100)) -le $((win_w * win_h * 12)) ] && [ $((hud_w * 2)) -le "$win_w" ] ||
+  { echo "FAIL: the HUD covers more than an eighth of the view or half its width"; exit 1; }
 echo "window opened, switched body and technique, wrote two screenshots, recorded a flight that replays"

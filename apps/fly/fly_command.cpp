@@ -67,13 +67,23 @@ void run(const FlyArgs& args) {
   FlyInput input(context->window());  // first: the HUD's backend chains to its callback
   Hud hud(context->window());
   FlySession session(args, context->window(), input, hud);
-  auto last = std::chrono::steady_clock::now();
+  auto begun = std::chrono::steady_clock::now(), last = begun;
+  int frames = 0;
+  std::pair<int, int> hud_size{0, 0};
   for (;;) {
     auto now = std::chrono::steady_clock::now();
     double dt = std::chrono::duration<double>(now - last).count();
     last = now;
     if (!session.frame(dt)) break;
+    ++frames;
+    hud_size = std::max(hud_size, hud.size());
   }
+  double seconds = std::chrono::duration<double>(last - begun).count();
+  std::printf(
+      "flew %d frames in %.1f s (%.1f frames/s); the HUD took at most %d x %d px of the "
+      "%d x %d window\n",
+      frames, seconds, frames / std::max(seconds, 1e-9), hud_size.first, hud_size.second,
+      args.width, args.height);
 }
 
 }  // namespace

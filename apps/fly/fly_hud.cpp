@@ -14,6 +14,8 @@ namespace {
 
 const std::array<double, 6> kTimeScales = {0.0, 1.0, 10.0, 100.0, 1000.0, 10000.0};
 const char* kTimeScaleNames[] = {"pause", "x1", "x10", "x100", "x1000", "x10000"};
+// Settings take this much width: the panel stays a corner of the view.
+constexpr float kItemWidth = 150.0f;
 
 }  // namespace
 
@@ -39,53 +41,68 @@ HudChanges Hud::draw(const HudView& v) {
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
+  if (!visible_) {
+    size_ = {0, 0};
+    ImGui::Render();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    return changes;
+  }
+  // A compact panel in the corner, sized to what it shows; its title bar
+  // folds it away, H hides it.
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
-  ImGui::Begin("planet");
-  ImGui::Text("height %.1f m above the ground (%.1f m above the ellipsoid)", v.height_m,
-              v.height_ellipsoid_m);
-  ImGui::Text("speed %.2f m/s  lat %.4f  lon %.4f  sun %.1f deg", v.speed_m_s, v.lat_deg, v.lon_deg,
+  ImGui::SetNextWindowBgAlpha(0.6f);
+  ImGui::Begin("planet (H hides)", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  ImGui::Text("%s  %s%s", v.body_name.c_str(), v.utc.c_str(), v.recording ? "  [rec]" : "");
+  ImGui::Text("%.1f m above ground (%.0f m ellipsoid)", v.height_m, v.height_ellipsoid_m);
+  ImGui::Text("%.3g m/s  lat %.4f lon %.4f  sun %.1f deg", v.speed_m_s, v.lat_deg, v.lon_deg,
               v.sun_elevation_deg);
-  ImGui::Text("frame %.1f ms  gpu ms:%s", v.frame_ms, v.passes.c_str());
-  ImGui::Text("%s  UTC %s%s", v.body_name.c_str(), v.utc.c_str(),
-              v.recording ? "  [recording]" : "");
-  if (ImGui::BeginCombo("body (B)", v.body.c_str())) {
-    for (const auto& b : v.bodies) {
-      if (ImGui::Selectable(b.c_str(), b == v.body)) changes.body = b;
+  ImGui::Text("frame %.0f ms  gpu %.1f ms  %s", v.frame_ms, v.gpu_ms, v.technique.c_str());
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("gpu ms:%s", v.passes.c_str());
+  if (ImGui::CollapsingHeader("settings")) {
+    ImGui::PushItemWidth(kItemWidth);
+    if (ImGui::BeginCombo("body (B)", v.body.c_str())) {
+      for (const auto& b : v.bodies) {
+        if (ImGui::Selectable(b.c_str(), b == v.body)) changes.body = b;
+      }
+      ImGui::EndCombo();
     }
-    ImGui::EndCombo();
-  }
-  if (ImGui::BeginCombo("technique (T)", v.technique.c_str())) {
-    for (const auto& t : v.techniques) {
-      if (ImGui::Selectable(t.c_str(), t == v.technique)) changes.technique = t;
+    if (ImGui::BeginCombo("sky (T)", v.technique.c_str())) {
+      for (const auto& t : v.techniques) {
+        if (ImGui::Selectable(t.c_str(), t == v.technique)) changes.technique = t;
+      }
+      ImGui::EndCombo();
     }
-    ImGui::EndCombo();
+    // Not while recording or flying a script: the clock must run on
+    // without jumps.
+    ImGui::BeginDisabled(v.clock_locked);
+    float hours = float(v.hours_utc);
+    if (ImGui::SliderFloat("UTC hour", &hours, 0.0f, 24.0f, "%.2f")) {
+      changes.hours_utc = double(hours);
+    }
+    ImGui::EndDisabled();
+    int scale_index = 0;
+    for (size_t i = 0; i < kTimeScales.size(); ++i) {
+      if (v.time_scale == kTimeScales[i]) scale_index = int(i);
+    }
+    if (ImGui::Combo("clock (P)", &scale_index, kTimeScaleNames, int(kTimeScales.size()))) {
+      changes.time_scale = kTimeScales[size_t(scale_index)];
+    }
+    float log_exposure = float(std::log10(v.exposure));
+    if (ImGui::SliderFloat("log exposure", &log_exposure, -3.0f, 3.0f, "%.2f")) {
+      changes.exposure = std::pow(10.0, double(log_exposure));
+    }
+    float lod = v.lod_pixels;
+    if (ImGui::SliderFloat("LOD error", &lod, 0.25f, 8.0f, "%.2f px")) changes.lod_pixels = lod;
+    ImGui::PopItemWidth();
   }
-  // Not while recording or flying a script: the clock must run on
-  // without jumps.
-  ImGui::BeginDisabled(v.clock_locked);
-  float hours = float(v.hours_utc);
-  if (ImGui::SliderFloat("time of day (UTC h)", &hours, 0.0f, 24.0f, "%.2f")) {
-    changes.hours_utc = double(hours);
+  if (ImGui::CollapsingHeader("keys")) {
+    ImGui::TextUnformatted("WASD move, R/F up/down, Shift x10");
+    ImGui::TextUnformatted("arrows or drag turn, Q/E roll");
+    ImGui::TextUnformatted("B body, T sky, P clock, H HUD");
+    ImGui::TextUnformatted("F12 screenshot, F9 record, Esc quit");
   }
-  ImGui::EndDisabled();
-  int scale_index = 0;
-  for (size_t i = 0; i < kTimeScales.size(); ++i) {
-    if (v.time_scale == kTimeScales[i]) scale_index = int(i);
-  }
-  if (ImGui::Combo("time scale (P pauses)", &scale_index, kTimeScaleNames,
-                   int(kTimeScales.size()))) {
-    changes.time_scale = kTimeScales[size_t(scale_index)];
-  }
-  float log_exposure = float(std::log10(v.exposure));
-  if (ImGui::SliderFloat("exposure (log10)", &log_exposure, -3.0f, 3.0f, "%.2f")) {
-    changes.exposure = std::pow(10.0, double(log_exposure));
-  }
-  float lod = v.lod_pixels;
-  if (ImGui::SliderFloat("terrain LOD pixel budget", &lod, 0.25f, 8.0f, "%.2f px")) {
-    changes.lod_pixels = lod;
-  }
-  ImGui::TextUnformatted("WASD move, R/F up/down, arrows or drag turn, Q/E roll, Shift x10");
-  ImGui::TextUnformatted("F12 screenshot, F9 record/stop, Esc quit");
+  ImVec2 size = ImGui::GetWindowSize();
+  size_ = {int(size.x), int(size.y)};
   ImGui::End();
   ImGui::Render();
   ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());

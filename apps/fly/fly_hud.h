@@ -4,6 +4,7 @@
 // pilot changed this frame; the session applies it.
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 struct GLFWwindow;
@@ -14,8 +15,8 @@ struct HudView {
   double height_m = 0;            // above the ground under the camera
   double height_ellipsoid_m = 0;  // above the body's ellipsoid
   double speed_m_s = 0, lat_deg = 0, lon_deg = 0, sun_elevation_deg = 0;
-  double frame_ms = 0;
-  std::string passes;  // "pass ms pass ms ..."
+  double frame_ms = 0, gpu_ms = 0;
+  std::string passes;  // " pass ms pass ms ..."
   std::string body_name, utc;
   bool recording = false;
   bool clock_locked = false;  // recording or scripted: the clock runs on
@@ -46,6 +47,14 @@ class Hud {
   // being used): the pilot's controls leave them alone.
   bool has_keyboard() const;
   bool has_mouse() const;
+  // H: the panel shown or hidden.
+  void toggle() { visible_ = !visible_; }
+  // The panel's size in the last frame, pixels (0 x 0 hidden).
+  std::pair<int, int> size() const { return size_; }
+
+ private:
+  bool visible_ = true;
+  std::pair<int, int> size_{0, 0};
 };
 
 }  // namespace planet::apps

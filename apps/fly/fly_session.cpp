@@ -178,6 +178,7 @@ void FlySession::handle_key(int key) {
   if (key == GLFW_KEY_F12) screenshot();
   if (key == GLFW_KEY_F9) toggle_recording();
   if (key == GLFW_KEY_P) clock_.set_scale(clock_.scale() > 0 ? 0.0 : 1.0);
+  if (key == GLFW_KEY_H) hud_.toggle();
 }
 
 HudView FlySession::hud_view(const Camera& cam, const glm::dvec3& sun, double real_dt) const {
@@ -192,6 +193,7 @@ HudView FlySession::hud_view(const Camera& cam, const glm::dvec3& sun, double re
   v.sun_elevation_deg = glm::degrees(sun_angles.elevation);
   v.frame_ms = real_dt * 1e3;
   for (const auto& p : stats_.passes) v.passes += fmt::format(" {} {:.2f}", p.pass, p.gpu_ms);
+  v.gpu_ms = stats_.total_gpu_ms();
   v.body_name = body_.name;
   v.utc = format_utc(clock_.utc());
   v.recording = recorder_ != nullptr;

@@ -4,6 +4,8 @@
 #include "terrain/obj_cage.h"
 #include "terrain/terrain_config.h"
 
+#include <opensubdiv/far/error.h>
+
 #include "core/data_paths.h"
 #include "core/error.h"
 
@@ -268,6 +270,29 @@ TEST(CageHeightTest, StellariumModelsLoadAsCages) {
     }
   }
   if (loaded == 0) GTEST_SKIP() << "no shape models in " << dir;
+}
+
+}  // namespace
+}  // namespace planet
+
+namespace planet {
+namespace {
+
+// OpenSubdiv prints "Error: ..." and "Warning: ..." itself unless told
+// otherwise: once a cage is built, what it reports goes into our own one
+// line instead, and nothing of it reaches the terminal.
+TEST(CageHeightTest, OpenSubdivPrintsNothingOfItsOwn) {
+  ObjCage cube = read_obj_cage(write_obj("cube.obj", cube_obj(kCubeFaces)));
+  cage_limit_points(cube, 1, "cube.obj");
+  testing::internal::CaptureStdout();
+  testing::internal::CaptureStderr();
+  OpenSubdiv::Far::Warning("a warning of OpenSubdiv's");
+  OpenSubdiv::Far::Error(OpenSubdiv::Far::FAR_RUNTIME_ERROR, "an error of OpenSubdiv's");
+  std::string out = testing::internal::GetCapturedStdout();
+  std::string err = testing::internal::GetCapturedStderr();
+  EXPECT_EQ(out + err, "");
+  // And the next cage starts clean.
+  EXPECT_NO_THROW(cage_limit_points(cube, 1, "cube.obj"));
 }
 
 }  // namespace
