@@ -4,6 +4,7 @@
 #include "atmosphere/math/shared_math.h"
 #include "atmosphere/reference/path_tracer.h"
 #include "core/error.h"
+#include "core/progress.h"
 #include "sim/body.h"
 
 #include <fmt/format.h>
@@ -86,13 +87,18 @@ void run_sky(const ProbeArgs& args) {
   std::printf("%15s %15s %15s\n", "wavelength_nm", "radiance", "std_error");
   glm::dvec3 rgb(0.0);
   TraceOptions options;
+  // Seconds at 100000 paths: a wait that shows its progress.
+  Progress progress("probe sky", double(medium.channels.size()), "wavelength");
+  progress.update(0);
   const ColumnTable table(medium);
   for (size_t i = 0; i < medium.channels.size(); ++i) {
     RadianceEstimate e =
         estimate_radiance(table, i, origin, view, sun, options, args.paths, 0x5eed + i);
+    progress.update(double(i + 1));
     std::printf("%15.0f %15.6g %15.2g\n", medium.channels[i].wavelength_nm, e.mean, e.std_error);
     rgb += e.mean * medium.channels[i].rgb_weight;
   }
+  progress.finish();
   std::printf("linear sRGB (%s mode): %.6g %.6g %.6g\n", args.mode.c_str(), rgb.r, rgb.g, rgb.b);
 }
 
