@@ -50,7 +50,7 @@ INSTANTIATE_TEST_SUITE_P(Flights, ShippedFlightGLTest,
                          ::testing::Values("ascent", "asteroid_landing", "earth_orbit_terminator",
                                            "mars_sunset", "terrain_asteroid", "terrain_earth",
                                            "terrain_mars"),
-                         [](const auto& info) { return info.param; });
+                         [](const auto& instance) { return instance.param; });
 
 }  // namespace
 }  // namespace planet
