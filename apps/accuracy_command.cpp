@@ -73,6 +73,7 @@ void write_images(const std::filesystem::path& dir, const Scene& scene, const Im
 }
 
 void run_accuracy(const AccuracyArgs& args) {
+  set_progress_shown(!args.quiet);
   // Every input before any work: the technique, the scenes, the paths.
   try {
     parse_technique(args.technique);
@@ -173,9 +174,9 @@ void add_accuracy_command(CLI::App& app) {
   cmd->add_option("--out", args->out, "Folder for technique, reference and error images");
   cmd->add_flag("--quiet", args->quiet, "No progress and no word of references to render");
   cmd->footer(
-      fmt::format("References are cached in {} (PLANET_CACHE_DIR=data uses the shipped "
-                  "ones); one not cached is rendered first, after saying what it costs.",
-                  reference_cache_dir().string()));
+      fmt::format("References are read from {} and the shipped {}; one in neither is "
+                  "rendered into the first, after saying what it costs.",
+                  reference_cache_dir().string(), shipped_reference_dir().string()));
   cmd->callback([args] { run_accuracy(*args); });
 }
 

@@ -1,5 +1,7 @@
 #include "core/atomic_file.h"
 
+#include <unistd.h>
+
 #include "core/error.h"
 
 #include <fmt/format.h>
@@ -9,7 +11,10 @@
 namespace planet {
 
 std::filesystem::path partial_file(const std::filesystem::path& file) {
-  return file.parent_path() / (".partial-" + file.filename().string());
+  // The process's id in the name: two programs writing the same file (two
+  // tests filling one cache) each rename a whole file of their own.
+  return file.parent_path() /
+         (".partial-" + std::to_string(getpid()) + "-" + file.filename().string());
 }
 
 void write_file_atomically(const std::filesystem::path& file, const std::string& bytes) {

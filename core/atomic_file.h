@@ -1,6 +1,6 @@
 #pragma once
 // Files that are either whole or absent: written under a neighbouring
-// temporary name (".partial-<name>") and renamed into place, so that a
+// temporary name (".partial-<pid>-<name>") and renamed into place, so that a
 // program killed while writing leaves the last whole file, never half of
 // one that looks finished.
 #include <filesystem>

@@ -1,5 +1,7 @@
 #include "lab/reference_cache.h"
 
+#include "core/cache_dir.h"
+#include "core/data_paths.h"
 #include "core/error.h"
 #include "core/hash.h"
 #include "core/parallel.h"
@@ -15,15 +17,17 @@
 
 namespace planet {
 
-std::filesystem::path reference_cache_dir() {
-  if (const char* dir = std::getenv("PLANET_CACHE_DIR"); dir && *dir) {
-    return std::filesystem::path(dir) / "reference";
+std::filesystem::path reference_cache_dir() { return cache_dir("reference"); }
+
+std::filesystem::path shipped_reference_dir() { return data_dir() / "reference"; }
+
+std::vector<std::filesystem::path> reference_dirs() {
+  std::vector<std::filesystem::path> dirs{reference_cache_dir()};
+  std::error_code ec;
+  if (!std::filesystem::equivalent(dirs[0], shipped_reference_dir(), ec)) {
+    dirs.push_back(shipped_reference_dir());
   }
-  if (const char* xdg = std::getenv("XDG_CACHE_HOME"); xdg && *xdg) {
-    return std::filesystem::path(xdg) / "planet" / "reference";
-  }
-  const char* home = std::getenv("HOME");
-  return std::filesystem::path(home && *home ? home : ".") / ".cache" / "planet" / "reference";
+  return dirs;
 }
 
 namespace {
@@ -123,6 +127,18 @@ std::filesystem::path reference_sums_file(const std::filesystem::path& reference
 
 namespace {
 
+// A whole reference (image and noise) of this file name, in the cache or
+// among the shipped ones.
+std::optional<std::filesystem::path> find_whole(const std::filesystem::path& name) {
+  for (const std::filesystem::path& dir : reference_dirs()) {
+    std::filesystem::path file = dir / name;
+    if (std::filesystem::exists(file) && std::filesystem::exists(reference_noise_file(file))) {
+      return file;
+    }
+  }
+  return std::nullopt;
+}
+
 // The sums in the cache a render of this view and budget can go on from:
 // of the same view, with no more paths in any lane than the budget gives
 // it; of those, the one furthest along.
@@ -133,15 +149,17 @@ std::optional<std::pair<std::filesystem::path, RenderSums>> find_start(
   std::error_code ec;
   std::string prefix = fmt::format("{}-{}x{}-", scene.name, scene.width, scene.height);
   std::string mode_part = fmt::format("spp-{}-", to_string(mode));
-  for (const auto& entry : std::filesystem::directory_iterator(reference_cache_dir(), ec)) {
-    std::string name = entry.path().filename().string();
-    if (entry.path().extension() != ".sums" || name.rfind(prefix, 0) != 0 ||
-        name.find(mode_part) == std::string::npos) {
-      continue;
-    }
-    std::optional<RenderSums> sums = read_sums(entry.path(), view_key);
-    if (sums && sums->fits(lane_paths) && (!best || sums->traced() > best->second.traced())) {
-      best.emplace(entry.path(), std::move(*sums));
+  for (const std::filesystem::path& dir : reference_dirs()) {
+    for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+      std::string name = entry.path().filename().string();
+      if (entry.path().extension() != ".sums" || name.rfind(prefix, 0) != 0 ||
+          name.find(mode_part) == std::string::npos) {
+        continue;
+      }
+      std::optional<RenderSums> sums = read_sums(entry.path(), view_key);
+      if (sums && sums->fits(lane_paths) && (!best || sums->traced() > best->second.traced())) {
+        best.emplace(entry.path(), std::move(*sums));
+      }
     }
   }
   return best;
@@ -155,10 +173,10 @@ ReferenceRender reference_render(const Scene& scene, const PathBudget& paths, Re
   Body body = scene_body(scene);
   AtmosphereModel model = scene_atmosphere(scene, body);
   std::filesystem::path file = reference_cache_file(scene, model, paths, mode);
-  std::filesystem::path noise_file = reference_noise_file(file);
-  if (std::filesystem::exists(file) && std::filesystem::exists(noise_file)) {
-    return {read_image_rgb(file), read_image_rgb(noise_file), {}, 0.0};
+  if (std::optional<std::filesystem::path> found = find_whole(file.filename())) {
+    return {read_image_rgb(*found), read_image_rgb(reference_noise_file(*found)), {}, 0.0};
   }
+  std::filesystem::path noise_file = reference_noise_file(file);
   Medium medium = make_medium(model, mode);
   std::vector<int> lane_paths = paths.lane_paths(medium.channels.size());
   std::string view_key = reference_view_key(scene, model, mode);
@@ -209,8 +227,7 @@ ReferenceRender reference_render(const Scene& scene, const PathBudget& paths, Re
 
 bool reference_cached(const Scene& scene, const PathBudget& paths, ReferenceMode mode) {
   AtmosphereModel model = scene_atmosphere(scene, scene_body(scene));
-  std::filesystem::path file = reference_cache_file(scene, model, paths, mode);
-  return std::filesystem::exists(file) && std::filesystem::exists(reference_noise_file(file));
+  return find_whole(reference_cache_file(scene, model, paths, mode).filename()).has_value();
 }
 
 std::optional<PathBudget> best_cached_budget(const Scene& scene, ReferenceMode mode) {
@@ -220,7 +237,8 @@ std::optional<PathBudget> best_cached_budget(const Scene& scene, ReferenceMode m
   std::optional<PathBudget> best;
   double best_paths = 0;
   std::error_code ec;
-  for (const auto& entry : std::filesystem::directory_iterator(reference_cache_dir(), ec)) {
+  for (const std::filesystem::path& dir : reference_dirs()) {
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
     std::string name = entry.path().filename().string();
     if (name.rfind(prefix, 0) != 0 || name.ends_with(".noise.exr") || !name.ends_with(".exr")) {
       continue;
@@ -242,6 +260,7 @@ std::optional<PathBudget> best_cached_budget(const Scene& scene, ReferenceMode m
       best = budget;
       best_paths = paths;
     }
+  }
   }
   return best;
 }

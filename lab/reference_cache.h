@@ -7,6 +7,9 @@
 //
 // The cache lives in $PLANET_CACHE_DIR/reference if set, otherwise in
 // $XDG_CACHE_HOME/planet/reference, otherwise ~/.cache/planet/reference.
+// The references shipped in data/reference are read beside it (never
+// written): a render found in either is not rendered again, and a longer
+// render of a shipped view goes on from its shipped sums into the cache.
 #include "atmosphere/reference/reference_render.h"
 #include "core/image_io.h"
 #include "lab/scene.h"
@@ -17,6 +20,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 namespace planet {
 
@@ -28,6 +32,9 @@ namespace planet {
 constexpr int kReferenceVersion = 5;
 
 std::filesystem::path reference_cache_dir();
+std::filesystem::path shipped_reference_dir();  // data/reference
+// Where references are looked for: the cache, then the shipped ones.
+std::vector<std::filesystem::path> reference_dirs();
 
 // 16 hex digits identifying (model, scene, paths, mode, kReferenceVersion).
 std::string reference_key(const Scene& scene, const AtmosphereModel& model, const PathBudget& paths,
@@ -76,7 +83,7 @@ class ReferenceInterrupted : public std::runtime_error {
 // Whether the scene's reference at this budget is in the cache.
 bool reference_cached(const Scene& scene, const PathBudget& paths, ReferenceMode mode);
 // The budget of the cached reference of this view with the most paths, if
-// any is cached (the shipped ones: PLANET_CACHE_DIR=data).
+// any is cached or shipped.
 std::optional<PathBudget> best_cached_budget(const Scene& scene, ReferenceMode mode);
 
 // What rendering a reference would cost on this machine, from a short trial
