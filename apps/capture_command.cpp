@@ -2,6 +2,7 @@
 #include "apps/commands.h"
 #include "core/error.h"
 #include "core/paths.h"
+#include "core/progress.h"
 #include "gl/context.h"
 #include "render/capture.h"
 #include "sim/flight_script.h"
@@ -56,6 +57,7 @@ void run(const CaptureArgs& args) {
     std::tie(options.first_frame, options.end_frame) = parse_frame_range(args.frames);
   }
   options.progress = !args.quiet;
+  set_progress_shown(!args.quiet);
   options.pixel_budget = args.pixel_budget;
   options.terrain_cache_bytes = size_t(args.terrain_cache_mib * 1048576.0);
   // Every input, and the output folder, before GL starts.

@@ -28,6 +28,7 @@ struct ReferenceArgs {
 };
 
 void run_reference(const ReferenceArgs& args) {
+  set_progress_shown(!args.quiet);
   if (args.list) {
     for (const Scene& s : canonical_scenes()) {
       std::printf("%-20s %-9s %s\n", s.name.c_str(), s.body.c_str(), s.description.c_str());

@@ -4,16 +4,23 @@
 
 #include <unistd.h>
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <cstdio>
 
 namespace planet {
 
+namespace {
+std::atomic<bool> g_shown{true};
+}  // namespace
+
+void set_progress_shown(bool shown) { g_shown = shown; }
+
 Progress::Progress(std::string label, double total, std::string unit, bool quiet)
     : label_(std::move(label)),
       unit_(std::move(unit)),
       total_(total),
-      quiet_(quiet),
+      quiet_(quiet || !g_shown.load()),
       terminal_(isatty(fileno(stderr)) != 0),
       start_(std::chrono::steady_clock::now()) {}
 
@@ -36,7 +43,8 @@ void Progress::update(double done) {
   if (unit_.empty()) {
     line = fmt::format("{}: {:3.0f}%{}", label_, 100.0 * done / total_, time_left);
   } else if (total_ <= 1e4) {
-    line = fmt::format("{}: {} {:g}/{:g}  {:.1f} {}s/s{}", label_, unit_, done, total_, rate, unit_,
+    std::string count = done == std::floor(done) ? fmt::format("{:g}", done) : fmt::format("{:.1f}", done);
+    line = fmt::format("{}: {} {}/{:g}  {:.2g} {}s/s{}", label_, unit_, count, total_, rate, unit_,
                        time_left);
   } else {
     // Large counts (paths) as a share and a rate.

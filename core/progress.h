@@ -7,6 +7,10 @@
 
 namespace planet {
 
+// Whether progress is shown at all (commands with --quiet turn it off, for
+// the waits deep inside them too: a technique's precompute, say).
+void set_progress_shown(bool shown);
+
 class Progress {
  public:
   // `label` names the job ("capture ascent"); `total` is its size in

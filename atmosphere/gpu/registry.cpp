@@ -1,5 +1,6 @@
 #include "atmosphere/gpu/registry.h"
 
+#include "atmosphere/gpu/bruneton/bruneton_technique.h"
 #include "atmosphere/gpu/hillaire/hillaire_technique.h"
 #include "atmosphere/gpu/raymarch/raymarch_technique.h"
 #include "core/error.h"
@@ -56,6 +57,26 @@ const std::vector<std::pair<std::string, std::string>> kHillaireQualityPoints = 
     {"fine", "sky_view_steps=64,per_pixel_steps=96,aerial_substeps=4"},
 };
 
+std::unique_ptr<AtmosphereTechnique> make_bruneton(const TechniqueChoice& c) {
+  BrunetonTechnique::Settings s;
+  s.r = c.integer("r_size");
+  s.mu = c.integer("mu_size");
+  s.mu_s = c.integer("mu_s_size");
+  s.nu = c.integer("nu_size");
+  s.transmittance_width = c.integer("transmittance_width");
+  s.transmittance_height = c.integer("transmittance_height");
+  s.irradiance_width = c.integer("irradiance_width");
+  s.irradiance_height = c.integer("irradiance_height");
+  s.orders = c.integer("orders");
+  s.half = c.integer("floats") == 1;
+  s.combined = c.integer("textures") == 1;
+  s.integration_steps = c.integer("integration_steps");
+  s.sphere_samples = c.integer("sphere_samples");
+  s.transmittance_steps = c.integer("transmittance_steps");
+  s.tail = c.integer("tail") == 1;
+  return std::make_unique<BrunetonTechnique>(s);
+}
+
 std::vector<TechniqueEntry> make_registry() {
   return {
       {"raymarch",
@@ -77,6 +98,36 @@ std::vector<TechniqueEntry> make_registry() {
        [](const TechniqueChoice& c) {
          return make_hillaire(c, HillaireTechnique::MultipleScattering::kOrders);
        }},
+      {"bruneton",
+       "Bruneton and Neyret 2008, as Bruneton reworked it in 2017",
+       "transmittance, 4D single and multiple scattering and ground irradiance tables, the orders "
+       "iterated on the GPU when the model changes and kept on disk",
+       {{"r_size", "scattering table: altitudes", 4, 128, 32, true, {}},
+        {"mu_size", "scattering table: view zenith cosines (even)", 4, 512, 256, true, {}},
+        {"mu_s_size", "scattering table: sun zenith cosines", 4, 128, 64, true, {}},
+        {"nu_size", "scattering table: view-sun cosines", 2, 64, 8, true, {}},
+        {"transmittance_width", "transmittance table: view zenith cosines", 16, 2048, 256, true, {}},
+        {"transmittance_height", "transmittance table: altitudes", 4, 1024, 64, true, {}},
+        {"irradiance_width", "ground irradiance table: sun zenith cosines", 4, 1024, 64, true, {}},
+        {"irradiance_height", "ground irradiance table: altitudes", 2, 256, 16, true, {}},
+        {"orders", "orders of scattering iterated", 1, 50, 4, true, {}},
+        {"floats", "the scattering tables' floats", 0, 1, 0, true, {"full", "half"}},
+        {"textures", "single Mie in its own table, or its red in the scattering's alpha", 0, 1, 0,
+         true, {"separate", "combined"}},
+        {"integration_steps", "steps along each ray of single and multiple scattering", 4, 500, 50,
+         true, {}},
+        {"sphere_samples", "zenith angles of the gathers over the sphere", 4, 64, 16, true, {}},
+        {"transmittance_steps", "quadrature steps of each transmittance texel", 8, 1000, 100, true,
+         {}},
+        {"tail", "the orders past the last: left out (Bruneton's), or a geometric series", 0, 1, 1,
+         true, {"none", "geometric"}}},
+       {{"cheap", "r_size=16,mu_size=64,mu_s_size=16,nu_size=4,orders=2,floats=half"},
+        // Bruneton's own 2017 defaults.
+        {"bruneton2017",
+         "mu_size=128,mu_s_size=32,floats=half,textures=combined,tail=none,integration_steps=50"},
+        {"default", ""},
+        {"fine", "nu_size=16,orders=8,sphere_samples=24"}},
+       make_bruneton},
       {"hillaire2020", "Hillaire 2020",
        "the paper's LUTs, with its multiple scattering Psi = L2 / (1 - f_ms)", hillaire_quality(),
        kHillaireQualityPoints,
@@ -204,7 +255,7 @@ std::string describe_techniques() {
       std::string range = p.choices.empty() ? fmt::format("{}{:g} to {:g}",
                                                           p.integer ? "whole, " : "", p.min, p.max)
                                             : fmt::format("{}", fmt::join(p.choices, " | "));
-      out += fmt::format("  {:<17} {:<31} default {:<12} {}\n", p.key, range,
+      out += fmt::format("  {:<20} {:<31} default {:<12} {}\n", p.key, range,
                          format_value(p, p.default_value), p.description);
     }
     std::vector<std::string> points;

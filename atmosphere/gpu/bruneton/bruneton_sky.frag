@@ -1,0 +1,166 @@
+// Bruneton 2017's rendering: the sky, the sun disk, and the aerial
+// perspective over the opaque surfaces, from the precomputed tables, at any
+// altitude (a camera in space looks from where its ray enters the top).
+#include "atmosphere/gpu/bruneton/bruneton_common.glsl"
+
+in vec2 v_ndc;
+layout(location = 0) out vec4 o_radiance;
+
+layout(binding = 0) uniform sampler2D u_depth;
+layout(binding = 1) uniform sampler2D u_surface;
+layout(binding = 2) uniform sampler2D u_transmittance;
+layout(binding = 3) uniform sampler3D u_scattering;
+layout(binding = 4) uniform sampler3D u_single_mie;  // without COMBINED
+layout(binding = 5) uniform sampler2D u_irradiance;
+
+uniform vec3 u_camera;  // atmosphere space, metres
+uniform mat3 u_ray_from_ndc;
+uniform vec3 u_sun_dir;
+uniform float u_near;
+
+// The scattering table and single Mie at (r, mu, mu_s, nu); with COMBINED,
+// Mie's red only, the rest rebuilt from the ratio of the coefficients
+// (Bruneton's default, which over-brightens the glow of a low sun).
+vec3 scattering(Atmosphere atmosphere, float r, float mu, float mu_s, float nu, bool ground,
+                out vec3 single_mie) {
+#ifdef COMBINED
+  vec4 combined = bruneton_scattering_lookup(atmosphere, u_scattering, r, mu, mu_s, nu, ground);
+  single_mie = combined.r <= 0.0 ? vec3(0.0)
+                                 : combined.rgb * combined.a / combined.r *
+                                       (atmosphere.rayleigh_scattering.r / atmosphere.mie_scattering.r) *
+                                       (atmosphere.mie_scattering / atmosphere.rayleigh_scattering);
+  return combined.rgb;
+#else
+  single_mie = bruneton_scattering_lookup(atmosphere, u_single_mie, r, mu, mu_s, nu, ground).rgb;
+  return bruneton_scattering_lookup(atmosphere, u_scattering, r, mu, mu_s, nu, ground).rgb;
+#endif
+}
+
+vec3 with_phases(Atmosphere atmosphere, vec3 rayleigh, vec3 mie, float nu) {
+  return rayleigh * rayleigh_phase(nu) + mie * cornette_shanks_phase(atmosphere.mie_g, nu);
+}
+
+// The camera moved to where the ray enters the atmosphere; false when it
+// misses it.
+bool enter(Atmosphere atmosphere, inout vec3 camera, vec3 dir) {
+  float r = length(camera);
+  if (r <= atmosphere.top_radius) return true;
+  float t_near, t_far;
+  if (!ray_sphere(camera, dir, atmosphere.top_radius, t_near, t_far) || t_far <= 0.0) return false;
+  camera += max(t_near, 0.0) * dir;
+  return true;
+}
+
+// Bruneton 2017, GetSkyRadiance: the light scattered toward the camera along
+// the whole ray.
+vec3 sky_radiance(Atmosphere atmosphere, vec3 camera, vec3 dir, out vec3 transmittance) {
+  transmittance = vec3(1.0);
+  if (!enter(atmosphere, camera, dir)) return vec3(0.0);
+  float r = clamp(length(camera), atmosphere.bottom_radius, atmosphere.top_radius);
+  float mu = clamp_cosine(dot(camera, dir) / r);
+  float mu_s = clamp_cosine(dot(camera, u_sun_dir) / r);
+  float nu = dot(dir, u_sun_dir);
+  bool ground = ray_intersects_ground(atmosphere, r, mu);
+  transmittance = ground ? vec3(0.0) : bruneton_transmittance_to_top(atmosphere, u_transmittance, r, mu);
+  vec3 mie;
+  vec3 rayleigh = scattering(atmosphere, r, mu, mu_s, nu, ground, mie);
+  return with_phases(atmosphere, rayleigh, mie, nu);
+}
+
+// Bruneton 2017, GetSkyRadianceToPoint: the light scattered toward the
+// camera in front of the point at distance d along the ray, the difference
+// of two lookups, for a given zenith cosine mu of the ray.
+vec3 in_scattering(Atmosphere atmosphere, float r, float mu, float mu_s, float nu, float d,
+                   out vec3 transmittance) {
+  bool ground = ray_intersects_ground(atmosphere, r, mu);
+  transmittance = bruneton_transmittance(atmosphere, u_transmittance, r, mu, d, ground);
+  vec3 mie, mie_p;
+  vec3 rayleigh = scattering(atmosphere, r, mu, mu_s, nu, ground, mie);
+  float r_p = clamp(sqrt(d * d + 2.0 * r * mu * d + r * r), atmosphere.bottom_radius,
+                    atmosphere.top_radius);
+  float mu_p = clamp_cosine((r * mu + d) / r_p);
+  float mu_s_p = clamp_cosine((r * mu_s + d * nu) / r_p);
+  vec3 rayleigh_p = scattering(atmosphere, r_p, mu_p, mu_s_p, nu, ground, mie_p);
+  rayleigh = max(rayleigh - transmittance * rayleigh_p, vec3(0.0));
+  mie = max(mie - transmittance * mie_p, vec3(0.0));
+  // Bruneton's: no single Mie from a sun below the horizon, where the
+  // difference of two large lookups is noise.
+  mie *= smoothstep(0.0, 0.01, mu_s);
+  return with_phases(atmosphere, rayleigh, mie, nu);
+}
+
+// The aerial perspective to a point. Near the horizon the two lookups fall
+// on either side of the table's seam between rays that meet the ground and
+// rays that do not, and their difference is not the air in between: a
+// bright or dark line along the horizon (Bruneton's repository, issue 29).
+// Within HORIZON_BLEND of the horizon's cosine the result is the blend of
+// the two evaluated just outside it, each consistent with itself.
+vec3 sky_radiance_to_point(Atmosphere atmosphere, vec3 camera, vec3 point,
+                           out vec3 transmittance) {
+  vec3 dir = normalize(point - camera);
+  transmittance = vec3(1.0);
+  if (!enter(atmosphere, camera, dir)) return vec3(0.0);
+  float r = clamp(length(camera), atmosphere.bottom_radius, atmosphere.top_radius);
+  float mu = clamp_cosine(dot(camera, dir) / r);
+  float mu_s = clamp_cosine(dot(camera, u_sun_dir) / r);
+  float nu = dot(dir, u_sun_dir);
+  float d = length(point - camera);
+  float mu_h = -safe_sqrt(1.0 - (atmosphere.bottom_radius / r) * (atmosphere.bottom_radius / r));
+  if (abs(mu - mu_h) >= HORIZON_BLEND) return in_scattering(atmosphere, r, mu, mu_s, nu, d, transmittance);
+  vec3 t_below, t_above;
+  vec3 below = in_scattering(atmosphere, r, mu_h - HORIZON_BLEND, mu_s, nu, d, t_below);
+  vec3 above = in_scattering(atmosphere, r, mu_h + HORIZON_BLEND, mu_s, nu, d, t_above);
+  float w = (mu - (mu_h - HORIZON_BLEND)) / (2.0 * HORIZON_BLEND);
+  transmittance = mix(t_below, t_above, w);
+  return mix(below, above, w);
+}
+
+// Bruneton 2017, GetSunAndSkyIrradiance on level ground at p: the sun's
+// through the atmosphere and the sky's from the table.
+vec3 ground_radiance_at(Atmosphere atmosphere, vec3 p) {
+  float r = length(p);
+  float mu_s = clamp_cosine(dot(p, u_sun_dir) / r);
+  vec3 sun = atmosphere.solar_irradiance *
+             bruneton_transmittance_to_sun(atmosphere, u_transmittance, r, mu_s) * max(mu_s, 0.0);
+  vec3 sky = bruneton_irradiance(atmosphere, u_irradiance, r, mu_s);
+  return atmosphere.ground_albedo / kPi * (sun + sky);
+}
+
+void main() {
+  Atmosphere atmosphere = block_atmosphere();
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  float depth = texelFetch(u_depth, pixel, 0).r;
+  vec3 surface = depth > 0.0 ? texelFetch(u_surface, pixel, 0).rgb : vec3(0.0);
+
+  vec3 ray = u_ray_from_ndc * vec3(v_ndc, 1.0);
+  float ray_scale = length(ray);
+  vec3 dir = ray / ray_scale;
+  // Reversed-Z with an infinite far plane: view depth = near / depth.
+  float t_surface = depth > 0.0 ? ray_scale * u_near / depth : 3.0e38;
+
+  // A camera a hair below the bottom sphere (the ground mesh is an
+  // ellipsoid mapped onto it, up to float rounding) is lifted onto it.
+  vec3 camera = u_camera;
+  float r_camera = length(camera);
+  float r_min = atmosphere.bottom_radius + 1.0;
+  if (r_camera < r_min) camera = r_camera > 0.0 ? camera * (r_min / r_camera) : vec3(0, 0, r_min);
+
+  float t_ground_near, t_ground_far;
+  bool hits_ground = ray_sphere(camera, dir, atmosphere.bottom_radius, t_ground_near, t_ground_far) &&
+                     t_ground_near > 0.0;
+  vec3 radiance, transmittance;
+  if (depth > 0.0 || hits_ground) {
+    // The air in front of a surface ends at the bottom sphere (see
+    // hillaire_sky.frag); where no surface was drawn, the sphere is the
+    // ground, lit by the sun and the sky.
+    float t = depth > 0.0 ? (hits_ground ? min(t_surface, t_ground_near) : t_surface) : t_ground_near;
+    if (depth == 0.0) surface = ground_radiance_at(atmosphere, camera + t_ground_near * dir);
+    vec3 in_scatter = sky_radiance_to_point(atmosphere, camera, camera + t * dir, transmittance);
+    radiance = in_scatter + transmittance * surface;
+  } else {
+    radiance = sky_radiance(atmosphere, camera, dir, transmittance);
+    radiance += transmittance * sun_disk_radiance(atmosphere, dot(dir, u_sun_dir));
+  }
+  // Within half-float range, so that a 16-bit target cannot overflow.
+  o_radiance = vec4(min(radiance, vec3(6.0e4)), 1.0);
+}
