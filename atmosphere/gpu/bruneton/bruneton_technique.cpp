@@ -18,8 +18,13 @@ namespace planet {
 
 namespace {
 
-// Bumped whenever the tables computed for the same model and quality change.
-constexpr int kTablesVersion = 1;
+// Bumped whenever the tables computed for the same model, quality and
+// shaders change (the code around the shaders, say).
+constexpr int kTablesVersion = 3;
+constexpr const char* kPrecomputeShaders[] = {
+    "transmittance.comp",       "direct_irradiance.comp", "single_scattering.comp",
+    "scattering_density.comp",  "indirect_irradiance.comp", "multiple_scattering.comp",
+    "geometric_tail.comp",      "irradiance_tail.comp",     "ground_irradiance.comp"};
 // What the tables may take of memory at the most: a bad quality is refused
 // with a message, not an out-of-memory.
 constexpr double kMaxTableBytes = 3.0 * 1024 * 1024 * 1024;
@@ -116,6 +121,12 @@ std::string BrunetonTechnique::cache_key(const AtmosphereModel& model) const {
                         s.orders, s.half, s.combined, s.integration_steps, s.sphere_samples,
                         s.transmittance_steps, s.tail};
   h.bytes(values, sizeof(values));
+  // The programs' text as compiled, includes and all: a changed shader
+  // never serves tables it did not make.
+  for (const char* file : kPrecomputeShaders) {
+    std::string source = load_shader_source(std::filesystem::path("atmosphere/gpu/bruneton") / file);
+    h.bytes(source.data(), source.size());
+  }
   double mu_s_min = bruneton_mu_s_min(model);
   h.bytes(&mu_s_min, sizeof(mu_s_min));
   return fmt::format("{:016x}", h.value());

@@ -54,7 +54,7 @@ class BrunetonTechnique final : public AtmosphereTechnique {
   const std::vector<double>& precompute_seconds() const { return precompute_seconds_; }
 
   // The tables, for tests: RGBA float.
-  GLuint transmittance_table() const { return transmittance_.id(); }
+  GLuint transmittance_table() const { return transmittance_.id(); }  // optical depth
   GLuint scattering_table() const { return scattering_.id(); }
   GLuint single_mie_table() const { return single_mie_.id(); }
   GLuint irradiance_table() const { return irradiance_.id(); }
