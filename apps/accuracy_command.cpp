@@ -40,38 +40,6 @@ struct AccuracyArgs {
   bool quiet = false;
 };
 
-// Small images repeated pixel by pixel up to at least 256 columns, so that
-// a 32x16 comparison can be looked at.
-ImageRGB enlarged(const ImageRGB& image) {
-  int k = std::max(1, 256 / std::max(image.width, 1));
-  ImageRGB out{image.width * k, image.height * k, {}};
-  out.pixels.resize(size_t(out.width) * size_t(out.height) * 3);
-  for (int y = 0; y < out.height; ++y) {
-    for (int x = 0; x < out.width; ++x) {
-      for (int c = 0; c < 3; ++c) {
-        out.pixels[(size_t(y) * size_t(out.width) + size_t(x)) * 3 + size_t(c)] =
-            image.pixels[(size_t(y / k) * size_t(image.width) + size_t(x / k)) * 3 + size_t(c)];
-      }
-    }
-  }
-  return out;
-}
-
-void write_images(const std::filesystem::path& dir, const Scene& scene, const ImageRGB& technique,
-                  const ImageRGB& reference, const TechniqueAccuracy& accuracy) {
-  std::filesystem::create_directories(dir);
-  write_exr(dir / (scene.name + "_technique.exr"), technique);
-  write_tone_mapped_png(dir / (scene.name + "_technique.png"), enlarged(technique), scene.exposure);
-  write_exr(dir / (scene.name + "_reference.exr"), reference);
-  write_tone_mapped_png(dir / (scene.name + "_reference.png"), enlarged(reference), scene.exposure);
-  // The error image: |technique - reference| / mean reference, shown so
-  // that 10% of the mean is mid-grey-bright (exposure 5 through the curve).
-  ImageRGB error = accuracy.signed_error;
-  for (float& v : error.pixels) v = std::abs(v);
-  write_exr(dir / (scene.name + "_error.exr"), error);
-  write_tone_mapped_png(dir / (scene.name + "_error.png"), enlarged(error), 5.0);
-}
-
 void run_accuracy(const AccuracyArgs& args) {
   set_progress_shown(!args.quiet);
   // Every input before any work: the technique, the scenes, the paths.
@@ -99,6 +67,13 @@ void run_accuracy(const AccuracyArgs& args) {
   std::optional<OutputFolder> folder;
   if (!args.out.empty()) folder.emplace(args.out, "--out");
   auto context = GlContext::create_headless();
+  // What only a GL context can tell (a table larger than its textures),
+  // before the table's header and the first reference.
+  try {
+    make_technique(parse_technique(args.technique));
+  } catch (const InputError& e) {
+    throw InputError(fmt::format("--technique: {}", e.what()));
+  }
   std::printf("%-16s %-3s %11s %11s %9s %9s %9s %6s\n", "scene", "ch", "RMSE", "mean ref",
               "rel RMSE", "ref noise", "sky only", "bias");
   InterruptScope interrupt;
@@ -146,7 +121,7 @@ void run_accuracy(const AccuracyArgs& args) {
                   100 * noise[c] / std::max(e.mean_reference, 1e-30),
                   100 * accuracy.sky_channels[c].relative(), 100 * bias);
     }
-    if (folder) write_images(folder->path(), scene, technique, reference, accuracy);
+    if (folder) write_accuracy_images(folder->path(), scene, technique, reference, accuracy);
     std::fflush(stdout);
   }
   if (folder) folder->keep();

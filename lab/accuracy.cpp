@@ -1,6 +1,7 @@
 #include "lab/accuracy.h"
 
 #include "core/error.h"
+#include "core/tone_map.h"
 
 #include <fmt/format.h>
 
@@ -128,6 +129,38 @@ std::array<double, 3> masked_rms(const ImageRGB& image, const std::vector<uint8_
 
 std::array<double, 3> masked_mean(const ImageRGB& image, const std::vector<uint8_t>& mask) {
   return masked_average(image, mask, [](double v) { return v; });
+}
+
+// Small images repeated pixel by pixel up to at least 256 columns, so that
+// a 32x16 comparison can be looked at.
+ImageRGB enlarged(const ImageRGB& image) {
+  int k = std::max(1, 256 / std::max(image.width, 1));
+  ImageRGB out{image.width * k, image.height * k, {}};
+  out.pixels.resize(size_t(out.width) * size_t(out.height) * 3);
+  for (int y = 0; y < out.height; ++y) {
+    for (int x = 0; x < out.width; ++x) {
+      for (int c = 0; c < 3; ++c) {
+        out.pixels[(size_t(y) * size_t(out.width) + size_t(x)) * 3 + size_t(c)] =
+            image.pixels[(size_t(y / k) * size_t(image.width) + size_t(x / k)) * 3 + size_t(c)];
+      }
+    }
+  }
+  return out;
+}
+
+void write_accuracy_images(const std::filesystem::path& dir, const Scene& scene, const ImageRGB& technique,
+                  const ImageRGB& reference, const TechniqueAccuracy& accuracy) {
+  std::filesystem::create_directories(dir);
+  write_exr(dir / (scene.name + "_technique.exr"), technique);
+  write_tone_mapped_png(dir / (scene.name + "_technique.png"), enlarged(technique), scene.exposure);
+  write_exr(dir / (scene.name + "_reference.exr"), reference);
+  write_tone_mapped_png(dir / (scene.name + "_reference.png"), enlarged(reference), scene.exposure);
+  // The error image: |technique - reference| / mean reference, shown so
+  // that 10% of the mean is mid-grey-bright (exposure 5 through the curve).
+  ImageRGB error = accuracy.signed_error;
+  for (float& v : error.pixels) v = std::abs(v);
+  write_exr(dir / (scene.name + "_error.exr"), error);
+  write_tone_mapped_png(dir / (scene.name + "_error.png"), enlarged(error), 5.0);
 }
 
 }  // namespace planet

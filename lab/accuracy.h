@@ -7,6 +7,7 @@
 #include "lab/scene.h"
 
 #include <array>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -43,5 +44,14 @@ TechniqueAccuracy measure_accuracy(const Scene& scene, const ImageRGB& technique
 // e.g. a reference's per-pixel standard error, and its radiance.
 std::array<double, 3> masked_rms(const ImageRGB& image, const std::vector<uint8_t>& mask);
 std::array<double, 3> masked_mean(const ImageRGB& image, const std::vector<uint8_t>& mask);
+
+// Small images repeated pixel by pixel up to at least 256 columns, so that
+// a 32x16 comparison can be looked at.
+ImageRGB enlarged(const ImageRGB& image);
+// Into `dir`: the technique, the reference and the error |t - r| / mean
+// reference, each as EXR and as an enlarged tone-mapped PNG.
+void write_accuracy_images(const std::filesystem::path& dir, const Scene& scene,
+                           const ImageRGB& technique, const ImageRGB& reference,
+                           const TechniqueAccuracy& accuracy);
 
 }  // namespace planet

@@ -29,6 +29,12 @@ expect "--technique: unknown atmosphere technique 'nope'" "$planet" fly --techni
 expect "hillaire has no quality parameter 'foo' (its parameters: sky_view_steps," \
   "$planet" fly --technique hillaire:foo=1
 expect "raymarch: view_steps=0 is outside 1 to 512" "$planet" fly --technique raymarch:view_steps=0
+expect "bruneton: orders=0 is outside 1 to 50" "$planet" fly --technique bruneton:orders=0
+expect "bruneton: orders=51 is outside 1 to 50" "$planet" accuracy --technique bruneton:orders=51
+expect "--technique: bruneton: a scattering table of 8192 x 256 x 128 texels" \
+  "$planet" accuracy --scene earth_noon --technique bruneton:nu_size=64,mu_s_size=128,r_size=128
+expect "--technique: bruneton: mu_size=7 must be even" \
+  "$planet" accuracy --scene earth_noon --technique bruneton:mu_size=7
 expect "raymarch: light_steps=2.5 is not a whole number" "$planet" fly --technique raymarch:light_steps=2.5
 expect "hillaire: path=sideways is not one of by_altitude, luts, per_pixel" \
   "$planet" fly --technique hillaire:path=sideways
