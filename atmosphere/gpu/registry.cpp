@@ -213,27 +213,41 @@ TechniqueChoice parse_technique(const std::string& text) {
   TechniqueChoice choice{t.name, {}};
   for (const auto& p : t.quality) choice.values.emplace_back(p.key, p.default_value);
   if (colon == std::string::npos) return choice;
-  std::string rest = text.substr(colon + 1);
-  size_t at = 0;
-  while (true) {
-    size_t comma = rest.find(',', at);
-    std::string item = rest.substr(at, comma == std::string::npos ? std::string::npos : comma - at);
-    size_t eq = item.find('=');
-    if (eq == std::string::npos || eq == 0) {
-      throw InputError(fmt::format("{}: '{}' is not key=value (its keys: {})", t.name, item,
-                                   fmt::join(choice.values | std::views::keys, ", ")));
+  auto point_names = t.quality_points | std::views::keys;
+  // key=value items in turn; an item that names a quality point sets the
+  // point's values, and the items after it may change them.
+  auto apply = [&](const std::string& items, auto& self) -> void {
+    size_t at = 0;
+    while (true) {
+      size_t comma = items.find(',', at);
+      std::string item =
+          items.substr(at, comma == std::string::npos ? std::string::npos : comma - at);
+      size_t eq = item.find('=');
+      auto point = std::find_if(t.quality_points.begin(), t.quality_points.end(),
+                                [&](const auto& q) { return q.first == item; });
+      if (eq == std::string::npos && point != t.quality_points.end()) {
+        if (!point->second.empty()) self(point->second, self);
+      } else if (eq == std::string::npos || eq == 0) {
+        throw InputError(fmt::format("{}: '{}' is not key=value nor a quality point (its keys: {}; "
+                                     "its points: {})",
+                                     t.name, item, fmt::join(choice.values | std::views::keys, ", "),
+                                     fmt::join(point_names, ", ")));
+      } else {
+        std::string key = item.substr(0, eq);
+        auto it = std::find_if(t.quality.begin(), t.quality.end(),
+                               [&](const QualityParameter& p) { return p.key == key; });
+        if (it == t.quality.end()) {
+          throw InputError(fmt::format("{} has no quality parameter '{}' (its parameters: {})",
+                                       t.name, key, fmt::join(choice.values | std::views::keys, ", ")));
+        }
+        choice.values[size_t(it - t.quality.begin())].second =
+            parse_value(t, *it, item.substr(eq + 1));
+      }
+      if (comma == std::string::npos) break;
+      at = comma + 1;
     }
-    std::string key = item.substr(0, eq);
-    auto it = std::find_if(t.quality.begin(), t.quality.end(),
-                           [&](const QualityParameter& p) { return p.key == key; });
-    if (it == t.quality.end()) {
-      throw InputError(fmt::format("{} has no quality parameter '{}' (its parameters: {})", t.name,
-                                   key, fmt::join(choice.values | std::views::keys, ", ")));
-    }
-    choice.values[size_t(it - t.quality.begin())].second = parse_value(t, *it, item.substr(eq + 1));
-    if (comma == std::string::npos) break;
-    at = comma + 1;
-  }
+  };
+  apply(text.substr(colon + 1), apply);
   return choice;
 }
 
@@ -247,8 +261,8 @@ std::unique_ptr<AtmosphereTechnique> make_technique(const std::string& text) {
 
 std::string describe_techniques() {
   std::string out =
-      "Atmosphere techniques: pick one as NAME or NAME:KEY=VALUE,... (e.g. "
-      "hillaire:per_pixel_steps=20) on the command line or in a flight script's \"technique\".\n";
+      "Atmosphere techniques: pick one as NAME, NAME:KEY=VALUE,... or NAME:POINT[,KEY=VALUE...] "
+      "(e.g. hillaire:per_pixel_steps=20, bruneton:cheap) on the command line or in a flight script's \"technique\".\n";
   for (const auto& t : technique_registry()) {
     out += fmt::format("\n{} ({}): {}\n", t.name, t.source, t.summary);
     for (const auto& p : t.quality) {

@@ -30,8 +30,18 @@ TEST(TechniqueRegistryTest, EveryQualityPointParsesAndReadsBack) {
       std::string text = settings.empty() ? t.name : t.name + ":" + settings;
       TechniqueChoice choice = parse_technique(text);
       EXPECT_EQ(parse_technique(choice.text()).values, choice.values) << text;
+      // By its name, as the lab and a user name it.
+      EXPECT_EQ(parse_technique(t.name + ":" + point).values, choice.values) << point;
     }
   }
+}
+
+TEST(TechniqueRegistryTest, KeysAfterAQualityPointChangeIt) {
+  TechniqueChoice c = parse_technique("bruneton:cheap,orders=3");
+  EXPECT_EQ(c.integer("r_size"), 16);
+  EXPECT_EQ(c.integer("orders"), 3);
+  EXPECT_EQ(parse_technique("raymarch:fine").integer("view_steps"), 128);
+  EXPECT_THROW(parse_technique("raymarch:finest"), InputError);
 }
 
 TEST(TechniqueRegistryTest, ValuesAreCheckedAgainstTheirRanges) {
