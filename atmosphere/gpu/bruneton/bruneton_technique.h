@@ -48,9 +48,10 @@ class BrunetonTechnique final : public AtmosphereTechnique {
   const Settings& settings() const { return settings_; }
   // The tables came from the disk cache in the last update, not a precompute.
   bool from_cache() const { return from_cache_; }
-  // Wall time of the last precompute: the passes before the first order
-  // (transmittance, direct irradiance), then one entry per order (order 1:
-  // single scattering), each ending with glFinish. Empty when cached.
+  // Wall time of the last precompute, one entry per order, each ending
+  // with glFinish: the first holds the transmittance and direct irradiance
+  // with order 1 (single scattering), then orders 2 to N (and the tail
+  // with the last). Empty when cached.
   const std::vector<double>& precompute_seconds() const { return precompute_seconds_; }
 
   // The tables, for tests: RGBA float.
