@@ -8,6 +8,10 @@
 #include <string>
 #include <vector>
 
+namespace planet {
+void register_sky_benchmarks();  // apps/bench/sky_bench.cpp
+}
+
 namespace planet::apps {
 
 void add_bench_command(CLI::App& app) {
@@ -23,6 +27,7 @@ void add_bench_command(CLI::App& app) {
     std::vector<char*> argv;
     for (auto& a : args) argv.push_back(a.data());
     int argc = int(argv.size());
+    register_sky_benchmarks();
     benchmark::Initialize(&argc, argv.data());
     benchmark::RunSpecifiedBenchmarks();
     benchmark::Shutdown();

@@ -1,6 +1,15 @@
-// Sky techniques at 1280x720 on the Earth ground view, GPU time per frame
-// from timer queries (manual time), so that ratios between techniques are
-// measured in one run.
+// Every atmosphere technique of the registry on the same views (the ground,
+// 10 km, 400 km and 40 000 km over Earth, Mars and the asteroid), at
+// 640x360: GPU time from timer queries, the median of the timed frames, per
+// pass (counters, ms) and in total (manual time, the atmosphere's passes:
+// the surface and the tone map are the frame's, not the technique's), and
+// the technique's cost as a ratio to raymarch on the same view in the same
+// run. The tables a technique computes once per model (Bruneton's
+// precompute) are made before timing; their cost is the precompute's,
+// reported by the technique itself.
+//
+//   planet bench --benchmark_filter=Sky/
+//   planet bench --benchmark_filter='Sky/.*/mars_'
 #include "atmosphere/gpu/registry.h"
 #include "core/data_paths.h"
 #include "gl/context.h"
@@ -10,29 +19,125 @@
 #include <benchmark/benchmark.h>
 #include <glm/gtc/constants.hpp>
 
+#include <algorithm>
+#include <map>
+#include <string>
+#include <vector>
+
 namespace planet {
 namespace {
 
-void BM_SkyGround(benchmark::State& state, const char* technique) {
-  auto context = GlContext::create_headless();
-  Body body = load_body(data_dir() / "planets" / "earth.json");
-  AtmosphereModel model = load_atmosphere(body);
-  FrameRenderer renderer(1280, 720);
-  renderer.set_body(body, model, make_technique(technique));
-  Geodesy geodesy(body.shape);
-  Geodetic place{glm::radians(46.5), glm::radians(8.0), 2.0};
-  Camera camera = geodesy.camera_at(place, 0.0, glm::radians(10.0), Camera().vertical_fov);
-  glm::dvec3 sun = geodesy.body_from_enu(place) * glm::normalize(glm::dvec3(0.3, 0.5, 0.6));
-  // The first frame pays for llvmpipe's shader compilation; not timed.
-  renderer.render(camera, sun, 10.0);
-  for (auto _ : state) {
-    FrameStats stats = renderer.render(camera, sun, 10.0);
-    state.SetIterationTime(stats.total_gpu_ms() * 1e-3);
-  }
+constexpr int kWidth = 640, kHeight = 360;
+constexpr int kTimedFrames = 5;
+
+struct SkyView {
+  const char* name;
+  double altitude_m;
+  double pitch_deg, fov_deg;
+};
+
+// Looking 10 degrees up from 2 m, at the horizon from 10 km, at the limb
+// from 400 km (18 degrees down reaches past Earth's limb; on the smaller
+// bodies the limb is further down and the view holds more sky), and straight
+// down on the whole disk from 40 000 km.
+const SkyView kViews[] = {
+    {"ground", 2.0, 10.0, 60.0},
+    {"10km", 10e3, 0.0, 60.0},
+    {"400km", 400e3, -18.0, 60.0},
+    {"40000km", 40000e3, -90.0, 30.0},
+};
+const char* const kBodies[] = {"earth", "mars", "asteroid"};
+
+bool is_atmosphere_pass(const std::string& pass) { return pass != "surface" && pass != "tonemap"; }
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  size_t n = v.size();
+  return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
 }
-BENCHMARK_CAPTURE(BM_SkyGround, raymarch, "raymarch")
-    ->UseManualTime()
-    ->Unit(benchmark::kMillisecond);
+
+// The raymarch baseline per body and view, measured when first asked.
+std::map<std::string, double>& raymarch_ms() {
+  static std::map<std::string, double> ms;
+  return ms;
+}
+
+struct Timed {
+  double total_ms = 0;  // median over the timed frames, atmosphere passes only
+  std::map<std::string, double> pass_ms;  // median per pass
+};
+
+Timed time_frames(FrameRenderer& renderer, const Camera& camera, const glm::dvec3& sun) {
+  // The first frame pays for llvmpipe's shader compilation and the
+  // model's tables; not timed.
+  renderer.render(camera, sun, 10.0);
+  std::vector<double> totals;
+  std::map<std::string, std::vector<double>> passes;
+  for (int i = 0; i < kTimedFrames; ++i) {
+    double total = 0;
+    for (const PassTiming& p : renderer.render(camera, sun, 10.0).passes) {
+      if (!is_atmosphere_pass(p.pass)) continue;
+      passes[p.pass].push_back(p.gpu_ms);
+      total += p.gpu_ms;
+    }
+    totals.push_back(total);
+  }
+  Timed timed;
+  timed.total_ms = median(totals);
+  for (auto& [pass, ms] : passes) timed.pass_ms[pass] = median(ms);
+  return timed;
+}
+
+void BM_Sky(benchmark::State& state, std::string technique, std::string body_name,
+            SkyView view) {
+  auto context = GlContext::create_headless();
+  Body body = load_body(data_dir() / "planets" / (body_name + ".json"));
+  AtmosphereModel model = load_atmosphere(body);
+  Geodesy geodesy(body.shape);
+  Geodetic place{glm::radians(46.5), glm::radians(8.0), view.altitude_m};
+  Camera camera = geodesy.camera_at(place, 0.0, glm::radians(view.pitch_deg),
+                                    glm::radians(view.fov_deg));
+  glm::dvec3 sun = geodesy.body_from_enu(place) * glm::normalize(glm::dvec3(0.3, 0.5, 0.6));
+
+  std::string key = body_name + "/" + view.name;
+  if (!raymarch_ms().count(key)) {
+    FrameRenderer baseline(kWidth, kHeight);
+    baseline.set_body(body, model, make_technique("raymarch"));
+    raymarch_ms()[key] = time_frames(baseline, camera, sun).total_ms;
+  }
+  FrameRenderer renderer(kWidth, kHeight);
+  renderer.set_body(body, model, make_technique(technique));
+  Timed timed;
+  for (auto _ : state) {
+    timed = time_frames(renderer, camera, sun);
+    state.SetIterationTime(timed.total_ms * 1e-3);
+  }
+  for (const auto& [pass, ms] : timed.pass_ms) state.counters[pass + "_ms"] = ms;
+  state.counters["raymarch_ms"] = raymarch_ms()[key];
+  state.counters["over_raymarch"] = timed.total_ms / std::max(raymarch_ms()[key], 1e-9);
+}
 
 }  // namespace
+
+// One benchmark per (technique, body, view), raymarch's first so that the
+// others' ratios reuse its times: Sky/<technique>/<body>_<view>. Registered
+// when `planet bench` starts, not at static initialisation, where the
+// registry's tables may not be built yet.
+void register_sky_benchmarks() {
+  std::vector<std::string> names = technique_names();
+  std::stable_partition(names.begin(), names.end(),
+                        [](const std::string& n) { return n == "raymarch"; });
+  for (const char* body : kBodies) {
+    for (const SkyView& view : kViews) {
+      for (const std::string& technique : names) {
+        std::string name = "Sky/" + technique + "/" + body + "_" + view.name;
+        benchmark::RegisterBenchmark(name.c_str(), BM_Sky, technique, std::string(body), view)
+            ->UseManualTime()
+            ->Unit(benchmark::kMillisecond)
+            ->Iterations(1);
+      }
+    }
+  }
+}
+
 }  // namespace planet

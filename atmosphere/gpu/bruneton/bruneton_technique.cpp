@@ -4,6 +4,7 @@
 #include "atmosphere/gpu/bruneton/bruneton_cache.h"
 #include "core/error.h"
 #include "core/hash.h"
+#include "core/interrupt.h"
 #include "core/progress.h"
 #include "gl/context.h"
 #include "gl/timer.h"
@@ -13,6 +14,8 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 namespace planet {
 
@@ -214,6 +217,14 @@ void BrunetonTechnique::precompute() {
       }
       glFinish();
       progress.update(order_at + part * double(layer + 1) / s.r);
+      // Ctrl-C under a command's InterruptScope (without one SIGINT ends
+      // the process at once): nothing is kept, the cache is written whole
+      // or not at all.
+      if (InterruptScope::flag().load()) {
+        std::fprintf(stderr, "planet: interrupted: the bruneton tables were not finished and "
+                             "nothing of them is kept\n");
+        std::exit(kInterruptedExitStatus);
+      }
     }
     glMemoryBarrier(kTableBarrier);
   };
@@ -296,6 +307,7 @@ void BrunetonTechnique::precompute() {
   // last two orders of multiple scattering; of the ground's sky light, from
   // the last two of its own (the sky's irradiance runs an order behind).
   if (s.tail && s.orders >= 3) {
+    auto tail_began = std::chrono::steady_clock::now();
     Program tail = compute("geometric_tail.comp");
     glBindTextureUnit(1, multiple_orders[1 - multiple_before].id());
     glBindTextureUnit(2, multiple_orders[multiple_before].id());
@@ -307,6 +319,8 @@ void BrunetonTechnique::precompute() {
     bind_image(1, irradiance_, GL_RGBA32F, false, GL_READ_WRITE);
     glDispatchCompute(groups(s.irradiance_width, 8), groups(s.irradiance_height, 8), 1);
     glMemoryBarrier(kTableBarrier);
+    glFinish();
+    precompute_seconds_.back() += seconds_since(tail_began);
   }
   progress.finish();
   check_gl_errors("BrunetonTechnique::precompute");
