@@ -8,8 +8,9 @@
 // precompute) are made before timing; their cost is the precompute's,
 // reported by the technique itself.
 //
-//   planet bench --benchmark_filter=Sky/
-//   planet bench --benchmark_filter='Sky/.*/mars_'
+//   planet bench --benchmark_filter=^Sky/
+//   planet bench --benchmark_filter='^Sky/.*/mars_'
+//   planet bench --benchmark_filter=^SkyQuality/    (every quality point, Earth ground)
 #include "atmosphere/gpu/registry.h"
 #include "core/data_paths.h"
 #include "gl/context.h"
@@ -136,6 +137,18 @@ void register_sky_benchmarks() {
             ->Unit(benchmark::kMillisecond)
             ->Iterations(1);
       }
+    }
+  }
+  // Every quality point of every technique on the Earth ground view:
+  // SkyQuality/<technique>:<point>/earth_ground.
+  for (const TechniqueEntry& entry : technique_registry()) {
+    for (const auto& point : entry.quality_points) {
+      std::string technique = entry.name + ":" + point.first;
+      std::string name = "SkyQuality/" + technique + "/earth_ground";
+      benchmark::RegisterBenchmark(name.c_str(), BM_Sky, technique, std::string("earth"), kViews[0])
+          ->UseManualTime()
+          ->Unit(benchmark::kMillisecond)
+          ->Iterations(1);
     }
   }
 }
