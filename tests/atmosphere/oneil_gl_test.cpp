@@ -126,6 +126,36 @@ TEST(OneilScaleGLTest, FittedScaleBeatsTheChaptersOnMarsAndTheAsteroid) {
   }
 }
 
+// exposure=chapter: the technique writes the chapter's display values
+// 1 - exp(-exposure L) of the radiance it draws by default, and the frame's
+// tone map passes them through (to 8 bits, with its half-step dither).
+TEST(OneilExposureGLTest, ChapterExposureReplacesTheToneMap) {
+  auto context = GlContext::create_headless();
+  Scene scene = small_scene("earth_noon");
+  Body body = scene_body(scene);
+  AtmosphereModel model = scene_atmosphere(scene, body);
+  auto draw = [&](const std::string& technique, std::vector<uint8_t>* ldr) {
+    FrameRenderer renderer(kWidth, kHeight);
+    renderer.set_body(body, model, make_technique(technique));
+    renderer.render(scene.camera, scene.sun_dir_body, scene.exposure);
+    if (ldr) *ldr = renderer.read_ldr();
+    return renderer.read_hdr();
+  };
+  std::vector<float> radiance = draw("oneil", nullptr);
+  std::vector<uint8_t> ldr;
+  std::vector<float> display = draw("oneil:exposure=chapter", &ldr);
+  ASSERT_EQ(radiance.size(), display.size());
+  int differ = 0;
+  for (size_t i = 0; i < radiance.size(); ++i) {
+    if (i % 4 == 3) continue;
+    float expected = 1.0f - std::exp(-float(scene.exposure) * radiance[i]);
+    EXPECT_NEAR(display[i], expected, 1e-5f) << "texel " << i;
+    EXPECT_NEAR(float(ldr[i]), 255.0f * display[i], 1.0f) << "texel " << i;
+    differ += std::abs(display[i] - radiance[i]) > 1e-3f;
+  }
+  EXPECT_GT(differ, 0);
+}
+
 // Every canonical scene, and the camera at 1 m, 100 km, 1e6 km and inside
 // the planet on every body with the sun high, low, set and at the nadir:
 // no NaN or Inf anywhere in the image.

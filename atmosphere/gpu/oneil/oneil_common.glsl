@@ -103,5 +103,15 @@ vec3 oneil_phased(Atmosphere atmosphere, vec3 rayleigh, vec3 mie, vec3 dir) {
   return rayleigh * rayleigh_phase(nu) + mie * cornette_shanks_phase(atmosphere.mie_g, nu);
 }
 
-// Keep within half-float range for the HDR target.
-vec4 oneil_output(vec3 radiance) { return vec4(min(radiance, vec3(6.0e4)), 1.0); }
+uniform float u_exposure;
+
+// Radiance for the frame's tone map, kept within half-float range; or, with
+// the chapter's exposure, its display value 1 - exp(-exposure L) (the frame
+// then leaves it as it is).
+vec4 oneil_output(vec3 radiance) {
+#ifdef CHAPTER_EXPOSURE
+  return vec4(vec3(1.0) - exp(-u_exposure * radiance), 1.0);
+#else
+  return vec4(min(radiance, vec3(6.0e4)), 1.0);
+#endif
+}

@@ -65,6 +65,7 @@ OneilTechnique::OneilTechnique(Settings settings)
       fmt::format("SAMPLES {}", settings_.samples),
       fmt::format("DISTANCE_TOLERANCE {}", kDistanceTolerance),
   };
+  if (settings_.chapter_exposure) defines.push_back("CHAPTER_EXPOSURE 1");
   dome_program_ = Program::graphics("atmosphere/gpu/oneil/oneil_dome.vert",
                                     "atmosphere/gpu/oneil/oneil_dome.frag", defines);
   ground_program_ = Program::graphics("atmosphere/gpu/oneil/oneil_ground.vert",
@@ -116,6 +117,7 @@ void OneilTechnique::set_frame_uniforms(const Program& p, const SkyFrame& frame)
   glUniform3fv(p.uniform("u_sun_dir"), 1, glm::value_ptr(frame.sun_dir_atmo));
   glUniform1f(p.uniform("u_near"), frame.near);
   glUniform2f(p.uniform("u_viewport"), float(frame.width), float(frame.height));
+  glUniform1f(p.uniform("u_exposure"), frame.exposure);
   set_scale_uniforms(p, rayleigh_, mie_);
 }
 

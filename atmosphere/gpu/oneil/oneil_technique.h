@@ -20,10 +20,12 @@ class OneilTechnique final : public AtmosphereTechnique {
  public:
   enum class Scale { kFitted, kChapter };
   struct Settings {
-    int samples = 5;  // along each ray (the chapter's 5)
+    int samples = 8;  // along each ray (see the registry)
     int dome = 48;    // the dome's rings; twice as many segments around
     int cell = 8;     // pixels between the grid's vertices
     Scale scale = Scale::kFitted;
+    // The chapter's 1 - exp(-exposure L) in place of the frame's tone map.
+    bool chapter_exposure = false;
   };
   explicit OneilTechnique(Settings settings);
   OneilTechnique() : OneilTechnique(Settings{}) {}
@@ -31,6 +33,7 @@ class OneilTechnique final : public AtmosphereTechnique {
   std::string name() const override { return "oneil"; }
   void update(const AtmosphereModel& model) override;
   void render(const SkyFrame& frame, GpuTimer& timer) override;
+  bool writes_display_values() const override { return settings_.chapter_exposure; }
 
   const Settings& settings() const { return settings_; }
   // The fitted scale functions of the model last given, and their errors.
