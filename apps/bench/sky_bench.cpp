@@ -33,6 +33,9 @@ void BM_SkyGround(benchmark::State& state, const char* technique) {
 BENCHMARK_CAPTURE(BM_SkyGround, raymarch, "raymarch")
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_SkyGround, oneil, "oneil")
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond);
 
 }  // namespace
 }  // namespace planet

@@ -27,8 +27,10 @@ using namespace shared;
 namespace {
 
 // Simpson intervals along a ray for exact_column, with the samples crowded
-// toward the start (t = L u^2), where the air is densest.
-constexpr int kExactIntervals = 600;
+// toward the start (t = L u^2), where the air is densest. From 600 to 200
+// no body's worst fit error moved in its fourth digit, at a third of the
+// time (a body's two fits and errors: 0.3 s).
+constexpr int kExactIntervals = 200;
 
 // The grid of the fit and of its error, over y = h / thickness and x = 1 - mu.
 constexpr int kFitHeights = 41, kFitCosines = 81;
