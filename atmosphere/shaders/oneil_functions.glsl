@@ -18,16 +18,23 @@
 // (the shell ends), and on a small body the horizon's path depends on the
 // radius (it grows as sqrt(r / H)). The fitted form keeps the chapter's
 // shape and carries both in closed form:
-//   column(h, mu) = V(h) G(h, mu) exp(Q(x, y)),  mu >= 0, y = h / thickness,
+//   column(h, mu) = V(h) G(h, mu) exp(Q(v, z)),  mu >= 0,
 // V(h) = H (exp(-h / H) - exp(-thickness / H)) the vertical column, exact;
 // G the path length through a thin shell of thickness D = H L / (H + L)
 // above r (L = top - r) divided by D, which is 1 straight up, ~1 / mu for
 // mu >> sqrt(D / r) and saturates at sqrt(2 r / D) at the horizon, as the
 // exponential column does at sqrt(pi r / (2 H)); and Q a polynomial of
-// x^1..x^kOneilXTerms times y^0..y^(kOneilYTerms - 1), so that Q = 0 and the
-// column is exact straight up. A ray below the horizontal that misses the
-// ground is split at its perigee, as Chapman's function is: two upward
-// halves from the perigee, less the upward one from the start.
+// v^1..v^kOneilXTerms times z^0..z^(kOneilYTerms - 1), v and z the
+// chapter's x and the height recast (oneil_horizon_variable,
+// oneil_height_variable), so that Q = 0 and the column is exact straight
+// up. Q's coefficients are fitted per body and component when the model
+// loads (atmosphere/math/oneil_math.h): a closed-form core and a small
+// polynomial rather than a 2D table, so that the technique stays the
+// chapter's (a few arithmetic operations per evaluation, no texture) and
+// `planet probe oneil-fit` can print what the shader evaluates. A ray below
+// the horizontal that misses the ground is split at its perigee, as
+// Chapman's function is: two upward halves from the perigee, less the
+// upward one from the start.
 //
 // The constants and the scale function's type are in oneil_definitions.glsl.
 

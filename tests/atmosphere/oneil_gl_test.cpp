@@ -49,8 +49,15 @@ struct AccuracyCase {
 
 void PrintTo(const AccuracyCase& c, std::ostream* os) { *os << c.scene; }
 
+// Today's worst channel (earth_noon 51.5 %, sunset 49.1 %, twilight 75.0 %,
+// 400 km 61.5 %, Mars noon 61.6 %, Mars sunset 121 %) + 20 %.
 const AccuracyCase kCases[] = {
-    {"earth_noon", PathBudget({40960, 147456, 335872}), 0.58},
+    {"earth_noon", PathBudget({40960, 147456, 335872}), 0.62},
+    {"earth_400km", PathBudget({98304, 180224, 655360}), 0.74},
+    {"earth_sunset", PathBudget({24576, 126976, 811008}), 0.59},
+    {"earth_twilight", PathBudget({430080, 339968, 704512}), 0.90},
+    {"mars_noon", 196608, 0.74},
+    {"mars_sunset", PathBudget({184320, 143360, 131072}), 1.45},
 };
 
 class OneilAccuracyGLTest : public ::testing::TestWithParam<AccuracyCase> {
@@ -106,7 +113,12 @@ ImageRGB render_without_absorber(const Scene& scene, const std::string& techniqu
 // scale function approximates, single scattering, by the raymarch
 // baseline at its fine quality, with the absorber (which O'Neil's model
 // lacks) out of both; the path-traced references hold multiple scattering,
-// which no scale function brings.
+// which no scale function brings. Measured (relative RMSE, worst channel):
+// fitted 0.39 / 1.39 / 0.25 / 0.94 %, chapter 6.6 / 103 / 40 / 154 % on Mars
+// noon, Mars sunset, the asteroid's surface and the asteroid from space.
+// Against the path-traced references instead, the chapter's polynomial is
+// the nearer on Mars (its error offsets the missing multiple scattering):
+// the README's table says so.
 TEST(OneilScaleGLTest, FittedScaleBeatsTheChaptersOnMarsAndTheAsteroid) {
   auto context = GlContext::create_headless();
   for (const char* name : {"mars_noon", "mars_sunset", "asteroid_surface", "asteroid_space"}) {
