@@ -118,7 +118,7 @@ ImageRGB render_without_absorber(const Scene& scene, const std::string& techniqu
 // noon, Mars sunset, the asteroid's surface and the asteroid from space.
 // Against the path-traced references instead, the chapter's polynomial is
 // the nearer on Mars (its error offsets the missing multiple scattering):
-// the README's table says so.
+// planet accuracy --technique oneil:scale=chapter shows it.
 TEST(OneilScaleGLTest, FittedScaleBeatsTheChaptersOnMarsAndTheAsteroid) {
   auto context = GlContext::create_headless();
   for (const char* name : {"mars_noon", "mars_sunset", "asteroid_surface", "asteroid_space"}) {
@@ -166,6 +166,28 @@ TEST(OneilExposureGLTest, ChapterExposureReplacesTheToneMap) {
     differ += std::abs(display[i] - radiance[i]) > 1e-3f;
   }
   EXPECT_GT(differ, 0);
+}
+
+// The sun's disk seen past the planet from deep space, where no ray meets
+// the atmosphere, as the raymarch baseline draws it (the same shared
+// sun.glsl): a 0.2 deg view into the disk's middle.
+TEST(OneilSunGLTest, SunDiskShowsFromDeepSpace) {
+  auto context = GlContext::create_headless();
+  Body body = load_body(data_dir() / "planets" / "earth.json");
+  body.terrain = nullptr;
+  AtmosphereModel model = load_atmosphere(body);
+  auto view = view_from_place(body.shape, {glm::radians(46.5), glm::radians(8.0), 1e9}, 90.0,
+                              30.0, 0.2, 30.0, 90.0);
+  auto centre = [&](const std::string& technique) {
+    FrameRenderer renderer(kWidth, kHeight);
+    renderer.set_body(body, model, make_technique(technique));
+    renderer.render(view.camera, view.sun_dir_body, 10.0);
+    std::vector<float> hdr = renderer.read_hdr();
+    return hdr[(size_t(kHeight / 2) * kWidth + kWidth / 2) * 4 + 1];
+  };
+  float raymarch = centre("raymarch"), oneil = centre("oneil");
+  EXPECT_GT(raymarch, 1e3f);
+  EXPECT_NEAR(oneil / raymarch, 1.0f, 1e-4f);
 }
 
 // Every canonical scene, and the camera at 1 m, 100 km, 1e6 km and inside

@@ -2,7 +2,8 @@
 // surface * transmittance + in-scattered light, from the grid's vertices
 // where they describe this pixel's ray, else from the pixel's own ray: by a
 // silhouette (its depth more than DISTANCE_TOLERANCE off the
-// interpolated one) or next to open sky. Open-sky pixels are the dome's.
+// interpolated one) or next to open sky. Open-sky pixels are the dome's,
+// but for those whose rays miss the atmosphere, which show the sun alone.
 #include "atmosphere/gpu/oneil/oneil_common.glsl"
 
 in vec3 v_rayleigh;
@@ -22,7 +23,16 @@ void main() {
   float t_surface = surface_distance(pixel, ray_scale);
   float t_ground;
   bool ground = ray_hits_ground(atmosphere, camera, dir, t_ground);
-  if (t_surface == kFar && !ground) discard;
+  if (t_surface == kFar && !ground) {
+    // Open sky is the dome's, but for the rays that miss the atmosphere
+    // altogether (from space), where only the sun's disk shows.
+    float t_top_near, t_top_far;
+    if (ray_sphere(camera, dir, atmosphere.top_radius, t_top_near, t_top_far) && t_top_far > 0.0) {
+      discard;
+    }
+    o_radiance = oneil_output(sun_disk_radiance(atmosphere, dot(dir, u_sun_dir)));
+    return;
+  }
   // Where no surface was drawn but the ray meets the bottom sphere (the
   // mesh's flat facets sag below the true ellipsoid near the horizon), the
   // sphere itself is the ground: Lambertian with the model's albedo.
