@@ -1,7 +1,7 @@
 // The opaque surfaces and the bottom sphere, seen through the atmosphere:
 // surface * transmittance + in-scattered light, from the grid's vertices
 // where they describe this pixel's ray, else from the pixel's own ray: by a
-// silhouette (its depth more than DISTANCE_TOLERANCE off the
+// silhouette (its inverse distance more than DISTANCE_TOLERANCE off the
 // interpolated one) or next to open sky. Open-sky pixels are the dome's,
 // but for those whose rays miss the atmosphere, which show the sun alone.
 #include "atmosphere/gpu/oneil/oneil_common.glsl"
@@ -9,7 +9,7 @@
 in vec3 v_rayleigh;
 in vec3 v_mie;
 in vec3 v_transmittance;
-in float v_distance;
+in float v_inverse_distance;
 in float v_sky;
 layout(location = 0) out vec4 o_radiance;
 
@@ -42,7 +42,7 @@ void main() {
                                                         u_sun_dir);
   float distance = t_surface < kFar ? t_surface : t_ground;
   vec3 rayleigh = v_rayleigh, mie = v_mie, transmittance = v_transmittance;
-  if (v_sky > 0.0 || abs(v_distance - distance) > DISTANCE_TOLERANCE * distance) {
+  if (v_sky > 0.0 || abs(v_inverse_distance * distance - 1.0) > DISTANCE_TOLERANCE) {
     oneil_ray(atmosphere, camera, dir, t_surface, rayleigh, mie, transmittance);
   }
   o_radiance = oneil_output(surface * transmittance + oneil_phased(atmosphere, rayleigh, mie, dir));

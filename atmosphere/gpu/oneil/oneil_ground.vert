@@ -13,7 +13,9 @@ uniform int u_columns;
 out vec3 v_rayleigh;
 out vec3 v_mie;
 out vec3 v_transmittance;
-out float v_distance;  // to the surface or the ground, along the unit ray
+// 1 / the distance to the surface or the ground along the unit ray: over a
+// plane it is linear across the screen, as the grid interpolates it.
+out float v_inverse_distance;
 out float v_sky;       // 1 for a vertex over open sky
 
 void main() {
@@ -31,7 +33,8 @@ void main() {
   float t_ground;
   bool ground = ray_hits_ground(atmosphere, camera, dir, t_ground);
   v_sky = t_surface == kFar && !ground ? 1.0 : 0.0;
-  v_distance = t_surface == kFar ? (ground ? t_ground : 0.0) : t_surface;
+  float distance = t_surface == kFar ? t_ground : t_surface;
+  v_inverse_distance = v_sky > 0.0 ? 0.0 : 1.0 / distance;
   oneil_ray(atmosphere, camera, dir, t_surface, v_rayleigh, v_mie, v_transmittance);
   gl_Position = vec4(ndc, 0.0, 1.0);
 }
