@@ -12,6 +12,7 @@ uniform int u_rings;
 uniform int u_segments;
 uniform vec3 u_up, u_east, u_north;  // the camera's vertical and two horizontals
 uniform int u_outside;
+uniform mat3 u_ndc_from_ray;  // the inverse of u_ray_from_ndc
 
 out vec3 v_rayleigh;
 out vec3 v_mie;
@@ -54,6 +55,6 @@ void main() {
   // The ray's direction in the camera's projective frame: x, y over z are
   // its NDC (u_ray_from_ndc maps NDC to rays); behind the camera, z < 0
   // and GL clips it.
-  vec3 q = inverse(u_ray_from_ndc) * drawn;
+  vec3 q = u_ndc_from_ray * drawn;
   gl_Position = vec4(q.xy, 0.0, q.z);
 }

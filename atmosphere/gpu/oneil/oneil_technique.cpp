@@ -160,6 +160,9 @@ void OneilTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   glUniform3fv(dome_program_.uniform("u_east"), 1, glm::value_ptr(glm::vec3(east)));
   glUniform3fv(dome_program_.uniform("u_north"), 1, glm::value_ptr(glm::vec3(north)));
   glUniform1i(dome_program_.uniform("u_outside"), outside ? 1 : 0);
+  glm::mat3 ndc_from_ray = glm::inverse(frame.atmo_ray_from_ndc);
+  glUniformMatrix3fv(dome_program_.uniform("u_ndc_from_ray"), 1, GL_FALSE,
+                     glm::value_ptr(ndc_from_ray));
   glBindVertexArray(dome_vao_.id());
   glDrawElements(GL_TRIANGLES, dome_index_count_, GL_UNSIGNED_INT, nullptr);
   timer.end();
