@@ -20,9 +20,10 @@ struct ProbeOneilArgs {
 };
 
 void print_error(const char* what, const oneil::ScaleError& e) {
-  std::printf("  %-28s worst relative %7.3f %% (at h = %.4g km, mu = %+.4f); worst absolute "
-              "%.3g of the vertical column\n",
-              what, 100 * e.worst_relative, e.worst_h / 1e3, e.worst_mu, e.worst_of_vertical);
+  std::printf(
+      "  %-28s worst relative %7.3f %% (at h = %.4g km, mu = %+.4f); worst absolute "
+      "%.3g of the vertical column\n",
+      what, 100 * e.worst_relative, e.worst_h / 1e3, e.worst_mu, e.worst_of_vertical);
 }
 
 void run(const ProbeOneilArgs& args) {
@@ -33,9 +34,10 @@ void run(const ProbeOneilArgs& args) {
   double thickness = model.top_radius - model.bottom_radius;
   std::printf("%s: atmosphere %.4g km thick over a %.6g km radius\n", body.name.c_str(),
               thickness / 1e3, model.bottom_radius / 1e3);
-  std::printf("fitted form: column = V(h) G(h, mu) exp(sum c[i][j] v^(i+1) z^j), i < %d, j < %d "
-              "(atmosphere/shaders/oneil_functions.glsl)\n",
-              oneil::kOneilXTerms, oneil::kOneilYTerms);
+  std::printf(
+      "fitted form: column = V(h) G(h, mu) exp(sum c[i][j] v^(i+1) z^j), i < %d, j < %d "
+      "(atmosphere/shaders/oneil_functions.glsl)\n",
+      oneil::kOneilXTerms, oneil::kOneilYTerms);
   const std::pair<const char*, const oneil::OneilScale*> parts[] = {{"Rayleigh", &fitted.rayleigh},
                                                                     {"Mie", &fitted.mie}};
   for (const auto& [name, scale] : parts) {
@@ -58,7 +60,8 @@ void run(const ProbeOneilArgs& args) {
   own.top_radius = own.bottom_radius * 1.025;
   double h_own = 0.25 * (own.top_radius - own.bottom_radius);
   std::printf("\nthe chapter's own case (thickness 2.5 %% of the radius, H a quarter of it):\n");
-  print_error("chapter's polynomial:", oneil::measure_scale_error(own, oneil::chapter_scale(h_own)));
+  print_error("chapter's polynomial:",
+              oneil::measure_scale_error(own, oneil::chapter_scale(h_own)));
   print_error("fitted:", oneil::measure_scale_error(own, oneil::fit_scale(own, h_own)));
 }
 

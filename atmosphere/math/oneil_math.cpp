@@ -42,7 +42,8 @@ constexpr int kReweightRounds = 30;
 // ground, nudged off it) to straight up, denser toward the horizon, where
 // the column changes fastest.
 double cosine_at(const Atmosphere& a, double r, int k, int n) {
-  double mu_horizon = -std::sqrt(std::max(1.0 - (a.bottom_radius / r) * (a.bottom_radius / r), 0.0));
+  double mu_horizon =
+      -std::sqrt(std::max(1.0 - (a.bottom_radius / r) * (a.bottom_radius / r), 0.0));
   double s = double(k) / double(n - 1);
   double mu = mu_horizon + (1.0 - mu_horizon) * s * s;
   return std::min(mu + 1e-9 * (1.0 - mu_horizon), 1.0);

@@ -25,8 +25,8 @@ Real oneil_horizon_variable(Real r, Real depth, Real mu);
 Real oneil_height_variable(Real scale_height, Real thickness, Real depth);
 Real oneil_column_up(const Atmosphere& atmosphere, const OneilScale& s, Real r, Real mu);
 Real oneil_column(const Atmosphere& atmosphere, const OneilScale& s, Real r, Real mu);
-Real2 oneil_columns(const Atmosphere& atmosphere, const OneilScale& rayleigh,
-                    const OneilScale& mie, const Real3& p, const Real3& d);
+Real2 oneil_columns(const Atmosphere& atmosphere, const OneilScale& rayleigh, const OneilScale& mie,
+                    const Real3& p, const Real3& d);
 Real3 oneil_extinction(const Atmosphere& atmosphere, const Real2& columns);
 Real2 oneil_path_columns(const Atmosphere& atmosphere, const OneilScale& rayleigh,
                          const OneilScale& mie, const Real3& o, const Real3& d, bool hits_ground,

@@ -176,8 +176,8 @@ TEST(OneilSunGLTest, SunDiskShowsFromDeepSpace) {
   Body body = load_body(data_dir() / "planets" / "earth.json");
   body.terrain = nullptr;
   AtmosphereModel model = load_atmosphere(body);
-  auto view = view_from_place(body.shape, {glm::radians(46.5), glm::radians(8.0), 1e9}, 90.0,
-                              30.0, 0.2, 30.0, 90.0);
+  auto view = view_from_place(body.shape, {glm::radians(46.5), glm::radians(8.0), 1e9}, 90.0, 30.0,
+                              0.2, 30.0, 90.0);
   auto centre = [&](const std::string& technique) {
     FrameRenderer renderer(kWidth, kHeight);
     renderer.set_body(body, model, make_technique(technique));
@@ -216,8 +216,8 @@ TEST(OneilCanonicalGLTest, NoNanOrInfInAnySceneOrView) {
     for (const View& view : {View{"1 m", 1.0, 5.0}, View{"100 km", 100e3, -20.0},
                              View{"1e6 km", 1e9, -90.0}, View{"inside", -2000.0, 5.0}}) {
       for (double sun_elevation : {60.0, 2.0, -5.0, -90.0}) {
-        SCOPED_TRACE(::testing::Message() << planet << ", " << view.what << ", sun at "
-                                          << sun_elevation << " deg");
+        SCOPED_TRACE(::testing::Message()
+                     << planet << ", " << view.what << ", sun at " << sun_elevation << " deg");
         auto v = view_from_place(body.shape, {glm::radians(46.5), glm::radians(8.0), view.height},
                                  0.0, view.pitch_deg, 90.0, sun_elevation, 90.0);
         renderer.render(v.camera, v.sun_dir_body, 10.0);

@@ -110,7 +110,8 @@ TEST(OneilMathTest, SingleScatteringMatchesABruteForceIntegral) {
   Atmosphere a = shared::to_shared(model);
   oneil::BodyScales s = oneil::fit_body_scales(model);
   // In the x-z plane, 30 deg over the camera's horizon.
-  const Real3 sun = glm::normalize(Real3(std::cos(glm::radians(30.0)), 0.0, std::sin(glm::radians(30.0))));
+  const Real3 sun =
+      glm::normalize(Real3(std::cos(glm::radians(30.0)), 0.0, std::sin(glm::radians(30.0))));
   struct Ray {
     double height, elevation_deg, azimuth_deg;
   };
@@ -144,10 +145,11 @@ TEST(OneilMathTest, SingleScatteringMatchesABruteForceIntegral) {
     }
     Real3 brute_r = sum_r * a.rayleigh_scattering * a.solar_irradiance;
     Real3 brute_m = sum_m * a.mie_scattering * a.solar_irradiance;
-    std::printf("height %g elevation %g: light / brute force %.4f %.4f (Rayleigh, blue; Mie), "
-                "optical depth %.4f\n",
-                ray.height, ray.elevation_deg, rayleigh.b / brute_r.b, mie.b / brute_m.b,
-                -std::log(transmittance.b) / depth.b);
+    std::printf(
+        "height %g elevation %g: light / brute force %.4f %.4f (Rayleigh, blue; Mie), "
+        "optical depth %.4f\n",
+        ray.height, ray.elevation_deg, rayleigh.b / brute_r.b, mie.b / brute_m.b,
+        -std::log(transmittance.b) / depth.b);
     for (int c = 0; c < 3; ++c) {
       SCOPED_TRACE(testing::Message() << "height " << ray.height << " elevation "
                                       << ray.elevation_deg << " channel " << c);

@@ -9,8 +9,8 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <chrono>
-#include <cstring>
 #include <cstdio>
+#include <cstring>
 #include <vector>
 
 namespace planet {
@@ -86,8 +86,7 @@ void OneilTechnique::update(const AtmosphereModel& model) {
   glNamedBufferSubData(block_.id(), 0, sizeof(block), &block);
   auto began = std::chrono::steady_clock::now();
   fitted_ = oneil::fit_body_scales(model);
-  double seconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - began).count();
   if (settings_.scale == Scale::kFitted) {
     rayleigh_ = fitted_.rayleigh;
     mie_ = fitted_.mie;
@@ -96,14 +95,13 @@ void OneilTechnique::update(const AtmosphereModel& model) {
     mie_ = oneil::chapter_scale(fitted_.mie.scale_height);
   }
   if (progress_shown()) {
-    std::fprintf(stderr,
-                 "oneil: scale functions fitted in %.2f s; worst optical-depth error %.2f %% "
-                 "Rayleigh (H %.4g km), %.2f %% Mie (H %.4g km)%s\n",
-                 seconds, 100 * fitted_.rayleigh_error.worst_relative,
-                 fitted_.rayleigh.scale_height / 1e3, 100 * fitted_.mie_error.worst_relative,
-                 fitted_.mie.scale_height / 1e3,
-                 settings_.scale == Scale::kChapter ? "; drawing with the chapter's polynomial"
-                                                    : "");
+    std::fprintf(
+        stderr,
+        "oneil: scale functions fitted in %.2f s; worst optical-depth error %.2f %% "
+        "Rayleigh (H %.4g km), %.2f %% Mie (H %.4g km)%s\n",
+        seconds, 100 * fitted_.rayleigh_error.worst_relative, fitted_.rayleigh.scale_height / 1e3,
+        100 * fitted_.mie_error.worst_relative, fitted_.mie.scale_height / 1e3,
+        settings_.scale == Scale::kChapter ? "; drawing with the chapter's polynomial" : "");
   }
   model_ = model;
   has_model_ = true;
