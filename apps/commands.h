@@ -22,5 +22,7 @@ void add_techniques_command(CLI::App& app);
 void add_probe_sun_command(CLI::App& probe);
 // `planet probe ground`: the terrain's height under a place.
 void add_probe_ground_command(CLI::App& probe);
+// `planet probe oneil-fit`: the oneil technique's fitted scale functions.
+void add_probe_oneil_command(CLI::App& probe);
 
 }  // namespace planet::apps

@@ -63,6 +63,7 @@ int main(int argc, char** argv) {
   planet::apps::add_techniques_command(app);
   planet::apps::add_probe_sun_command(probe);
   planet::apps::add_probe_ground_command(probe);
+  planet::apps::add_probe_oneil_command(probe);
 
   if (std::string unknown = unknown_command(app, argc, argv); !unknown.empty()) {
     std::fprintf(stderr, "planet: error: %s\n", unknown.c_str());

@@ -15,6 +15,7 @@ std::atomic<bool> g_shown{true};
 }  // namespace
 
 void set_progress_shown(bool shown) { g_shown = shown; }
+bool progress_shown() { return g_shown.load(); }
 
 Progress::Progress(std::string label, double total, std::string unit, bool quiet)
     : label_(std::move(label)),

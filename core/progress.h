@@ -10,6 +10,7 @@ namespace planet {
 // Whether progress is shown at all (commands with --quiet turn it off, for
 // the waits deep inside them too: a technique's precompute, say).
 void set_progress_shown(bool shown);
+bool progress_shown();
 
 class Progress {
  public:

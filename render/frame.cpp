@@ -91,6 +91,7 @@ FrameStats FrameRenderer::render(const Camera& camera, const glm::dvec3& sun_dir
         glm::mat3(atmo_ray_from_ndc(scale, camera, double(width_) / double(height_)));
     sky.sun_dir_atmo = glm::vec3(glm::normalize(scale * sun_dir_body));
     sky.near = float(camera.near);
+    sky.exposure = float(exposure);
     sky.depth_texture = depth_.id();
     sky.surface_texture = surface_.id();
     sky.target_framebuffer = hdr_fbo_.id();
@@ -107,6 +108,8 @@ FrameStats FrameRenderer::render(const Camera& camera, const glm::dvec3& sun_dir
   tonemap_pass_.begin(ldr_fbo_.id(), width_, height_, tonemap_program_);
   glBindTextureUnit(0, hdr_.id());
   glUniform1f(tonemap_program_.uniform("u_exposure"), float(exposure));
+  glUniform1i(tonemap_program_.uniform("u_display_values"),
+              atmosphere_ && technique_ && technique_->writes_display_values() ? 1 : 0);
   tonemap_pass_.draw();
   timer_.end();
 

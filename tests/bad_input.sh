@@ -39,6 +39,9 @@ expect "raymarch: light_steps=2.5 is not a whole number" "$planet" fly --techniq
 expect "hillaire: path=sideways is not one of by_altitude, luts, per_pixel" \
   "$planet" fly --technique hillaire:path=sideways
 expect "hillaire: 'per_pixel_steps' is not key=value" "$planet" fly --technique hillaire:per_pixel_steps
+expect "oneil: samples=1 is outside 2 to 16" "$planet" fly --technique oneil:samples=1
+expect "oneil: samples=17 is outside 2 to 16" "$planet" fly --technique oneil:samples=17
+expect "oneil: scale=foo is not one of fitted, chapter" "$planet" fly --technique oneil:scale=foo
 sed 's/"technique": "hillaire"/"technique": "hillaire:per_pixel_steps=2"/' "$flights/ascent.json" > "$work/steps.json"
 expect "steps.json: technique: hillaire: per_pixel_steps=2 is outside 4 to 256" \
   "$planet" capture --flight "$work/steps.json" --out "$work/s" --quiet

@@ -32,6 +32,7 @@ run probe transmittance --planet earth --height 0 --zenith 60
 run probe sky --planet mars --height 0 --view-zenith 45 --view-azimuth 90 --sun-zenith 30 --paths 200
 run probe sun --planet earth --lat 48.85 --lon 2.35 --time 2026-06-21T12:00:00Z
 run probe ground --planet earth --lat 46.55 --lon 7.98
+run probe oneil-fit --planet asteroid
 
 if linked="$(readelf -d "$cpu_tests" | grep NEEDED | grep -E 'lib(EGL|GL|GLX|OpenGL|epoxy|glfw)\.')"; then
   echo "FAIL: the CPU tests link GL:"; echo "$linked"; exit 1

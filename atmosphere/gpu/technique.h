@@ -31,6 +31,9 @@ struct SkyFrame {
   glm::mat3 atmo_ray_from_ndc{1.0f};
   glm::vec3 sun_dir_atmo{0, 0, 1};
   float near = 0.1f;  // view depth at reversed-Z depth 1
+  // The frame's tone-mapping exposure, for a technique that maps radiance
+  // to display values itself (see writes_display_values).
+  float exposure = 1.0f;
   // Inputs: reversed-Z depth (0 where nothing opaque was drawn) and the
   // radiance leaving opaque surfaces toward the camera, before the
   // atmosphere between them and the camera.
@@ -58,6 +61,10 @@ class AtmosphereTechnique {
   // (lut_coordinates.glsl). 0 when the technique does not compute it;
   // the terrain then estimates its own.
   virtual GLuint ground_irradiance() const { return 0; }
+  // The target holds display values in [0, 1] that the technique mapped
+  // itself (O'Neil's 1 - exp(-exposure L)), not radiance: the frame's tone
+  // map then passes them through unchanged.
+  virtual bool writes_display_values() const { return false; }
 };
 
 }  // namespace planet

@@ -1,0 +1,117 @@
+// What the oneil technique's shaders share: the atmosphere's block, O'Neil's
+// functions (oneil_functions.glsl) with the two scale functions from
+// uniforms, the frame's camera and sun, and the light along one ray, which
+// the dome's and the grid's vertices evaluate and a pixel that the grid's
+// interpolation cannot serve evaluates for itself.
+#include "atmosphere/shaders/atmosphere_block.glsl"
+#include "atmosphere/shaders/oneil_definitions.glsl"
+#include "atmosphere/shaders/oneil_functions.glsl"
+
+uniform vec3 u_camera;  // atmosphere space, metres
+uniform mat3 u_ray_from_ndc;
+uniform vec3 u_sun_dir;
+uniform float u_near;
+uniform vec2 u_viewport;
+uniform vec2 u_scale_heights;  // Rayleigh, Mie
+uniform int u_scale_kind;
+uniform float u_rayleigh_c[kOneilTerms];
+uniform float u_mie_c[kOneilTerms];
+
+layout(binding = 0) uniform sampler2D u_depth;
+layout(binding = 1) uniform sampler2D u_surface;
+
+OneilScale rayleigh_scale() {
+  OneilScale s;
+  s.scale_height = u_scale_heights.x;
+  s.kind = u_scale_kind;
+  for (int i = 0; i < kOneilTerms; ++i) s.c[i] = u_rayleigh_c[i];
+  return s;
+}
+
+OneilScale mie_scale() {
+  OneilScale s;
+  s.scale_height = u_scale_heights.y;
+  s.kind = u_scale_kind;
+  for (int i = 0; i < kOneilTerms; ++i) s.c[i] = u_mie_c[i];
+  return s;
+}
+
+// The sun's light through the atmosphere from the scale function, for the
+// ground where no surface was drawn (ground.glsl).
+Real3 transmittance_lookup(IN(Atmosphere) atmosphere, Real r, Real mu) {
+  Real2 columns = Real2(oneil_column(atmosphere, rayleigh_scale(), r, mu),
+                        oneil_column(atmosphere, mie_scale(), r, mu));
+  return exp(-oneil_extinction(atmosphere, columns));
+}
+#include "atmosphere/shaders/sunlight.glsl"
+#include "atmosphere/shaders/ground.glsl"
+
+// Reversed-Z with an infinite far plane: no surface is this far.
+const float kFar = 3.0e38;
+
+// A camera a hair below the bottom sphere (the ground mesh is an ellipsoid
+// mapped onto it, up to float rounding) or inside the planet is lifted
+// onto it, as every technique does.
+vec3 oneil_camera(Atmosphere atmosphere) {
+  float r = length(u_camera);
+  float r_min = atmosphere.bottom_radius + 1.0;
+  return r < r_min ? u_camera * (r_min / r) : u_camera;
+}
+
+// The unnormalised direction of the ray through an NDC point.
+vec3 ray_at_ndc(vec2 ndc) { return u_ray_from_ndc * vec3(ndc, 1.0); }
+
+// The distance to the surface drawn at a pixel (kFar for none).
+float surface_distance(ivec2 pixel, float ray_scale) {
+  float depth = texelFetch(u_depth, pixel, 0).r;
+  return depth > 0.0 ? ray_scale * u_near / depth : kFar;
+}
+
+bool ray_hits_ground(Atmosphere atmosphere, vec3 camera, vec3 dir, out float t_ground) {
+  float t_far;
+  return ray_sphere(camera, dir, atmosphere.bottom_radius, t_ground, t_far) && t_ground > 0.0;
+}
+
+// The light along the ray camera + t dir (unit dir) up to t_surface, the
+// bottom sphere or the top: in-scattered Rayleigh and Mie light per unit
+// phase function and the transmittance, with the sum started where the ray
+// enters the atmosphere (from far away the camera's own coordinates have
+// too few bits left for the samples).
+void oneil_ray(Atmosphere atmosphere, vec3 camera, vec3 dir, float t_surface, out vec3 rayleigh,
+               out vec3 mie, out vec3 transmittance) {
+  rayleigh = vec3(0.0);
+  mie = vec3(0.0);
+  transmittance = vec3(1.0);
+  float t_top_near, t_top_far;
+  if (!ray_sphere(camera, dir, atmosphere.top_radius, t_top_near, t_top_far) || t_top_far <= 0.0) {
+    return;
+  }
+  float t_start = max(t_top_near, 0.0);
+  float t_ground;
+  bool hits_ground = ray_hits_ground(atmosphere, camera, dir, t_ground);
+  float t_end = min(hits_ground ? min(t_top_far, t_ground) : t_top_far, t_surface);
+  if (t_end <= t_start) return;
+  vec3 origin = camera + t_start * dir;
+  oneil_single_scattering(atmosphere, rayleigh_scale(), mie_scale(), origin, dir, hits_ground, 0.0,
+                          t_end - t_start, u_sun_dir, SAMPLES, rayleigh, mie, transmittance);
+}
+
+// The phase functions per pixel (O'Neil's Mie phase is Cornette and
+// Shanks's, as the other techniques').
+vec3 oneil_phased(Atmosphere atmosphere, vec3 rayleigh, vec3 mie, vec3 dir) {
+  float nu = dot(dir, u_sun_dir);
+  return rayleigh * rayleigh_phase(nu) + mie * cornette_shanks_phase(atmosphere.mie_g, nu);
+}
+
+uniform float u_exposure;
+
+// Radiance for the frame's tone map, kept within half-float range; or, with
+// the chapter's exposure, its display value 1 - exp(-exposure L) (the frame
+// then leaves it as it is).
+vec4 oneil_output(vec3 radiance) {
+#ifdef CHAPTER_EXPOSURE
+  return vec4(vec3(1.0) - exp(-u_exposure * radiance), 1.0);
+#else
+  return vec4(min(radiance, vec3(6.0e4)), 1.0);
+#endif
+}
