@@ -199,7 +199,15 @@ HudView FlySession::hud_view(const Camera& cam, const glm::dvec3& sun, double re
   v.recording = recorder_ != nullptr;
   v.clock_locked = recorder_ != nullptr || scripted_ != nullptr;
   v.bodies.assign(kBodies.begin(), kBodies.end());
-  v.techniques = technique_names();
+  // Every technique at its default, then at each of its other quality
+  // points (bruneton:cheap, oneil:chapter, ...).
+  v.techniques.clear();
+  for (const TechniqueEntry& entry : technique_registry()) {
+    v.techniques.push_back(entry.name);
+    for (const auto& point : entry.quality_points) {
+      if (point.first != "default") v.techniques.push_back(entry.name + ":" + point.first);
+    }
+  }
   v.body = body_key_;
   v.technique = technique_;
   double day_start = std::floor((clock_.utc() + 43200.0) / 86400.0) * 86400.0 - 43200.0;
