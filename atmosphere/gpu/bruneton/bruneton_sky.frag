@@ -2,6 +2,7 @@
 // perspective over the opaque surfaces, from the precomputed tables, at any
 // altitude (a camera in space looks from where its ray enters the top).
 #include "atmosphere/gpu/bruneton/bruneton_common.glsl"
+#include "atmosphere/gpu/sky_pixel.glsl"
 
 in vec2 v_ndc;
 layout(location = 0) out vec4 o_radiance;
@@ -128,22 +129,12 @@ vec3 ground_radiance_at(Atmosphere atmosphere, vec3 p) {
 
 void main() {
   Atmosphere atmosphere = block_atmosphere();
-  ivec2 pixel = ivec2(gl_FragCoord.xy);
-  float depth = texelFetch(u_depth, pixel, 0).r;
-  vec3 surface = depth > 0.0 ? texelFetch(u_surface, pixel, 0).rgb : vec3(0.0);
-
-  vec3 ray = u_ray_from_ndc * vec3(v_ndc, 1.0);
-  float ray_scale = length(ray);
-  vec3 dir = ray / ray_scale;
-  // Reversed-Z with an infinite far plane: view depth = near / depth.
-  float t_surface = depth > 0.0 ? ray_scale * u_near / depth : 3.0e38;
-
-  // A camera a hair below the bottom sphere (the ground mesh is an
-  // ellipsoid mapped onto it, up to float rounding) is lifted onto it.
-  vec3 camera = u_camera;
-  float r_camera = length(camera);
-  float r_min = atmosphere.bottom_radius + 1.0;
-  if (r_camera < r_min) camera = r_camera > 0.0 ? camera * (r_min / r_camera) : vec3(0, 0, r_min);
+  SkyPixel pixel = sky_pixel(atmosphere, u_depth, u_surface, v_ndc, u_ray_from_ndc, u_near, u_camera);
+  float depth = pixel.depth;
+  vec3 surface = pixel.surface;
+  vec3 dir = pixel.dir;
+  float t_surface = pixel.t_surface;
+  vec3 camera = pixel.camera;
 
   float t_ground_near, t_ground_far;
   bool hits_ground = ray_sphere(camera, dir, atmosphere.bottom_radius, t_ground_near, t_ground_far) &&

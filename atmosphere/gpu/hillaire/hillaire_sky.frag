@@ -8,6 +8,7 @@
 //    the same multiple-scattering LUT.
 // Between the two altitudes both run and are blended, so that nothing pops.
 #include "atmosphere/gpu/hillaire/hillaire_common.glsl"
+#include "atmosphere/gpu/sky_pixel.glsl"
 
 in vec2 v_ndc;
 layout(location = 0) out vec4 o_radiance;
@@ -74,23 +75,15 @@ void froxel(float t, out vec3 scattering, out vec3 transmittance) {
 
 void main() {
   Atmosphere atmosphere = block_atmosphere();
-  ivec2 pixel = ivec2(gl_FragCoord.xy);
-  float depth = texelFetch(u_depth, pixel, 0).r;
-  vec3 surface = depth > 0.0 ? texelFetch(u_surface, pixel, 0).rgb : vec3(0.0);
-
-  vec3 ray = u_ray_from_ndc * vec3(v_ndc, 1.0);
-  float ray_scale = length(ray);
-  vec3 dir = ray / ray_scale;
-  // Reversed-Z with an infinite far plane: view depth = near / depth.
+  SkyPixel pixel = sky_pixel(atmosphere, u_depth, u_surface, v_ndc, u_ray_from_ndc, u_near, u_camera);
+  float depth = pixel.depth;
+  vec3 surface = pixel.surface;
+  vec3 dir = pixel.dir;
+  float t_surface = pixel.t_surface;
+  vec3 camera = pixel.camera;
   const float kFar = 3.0e38;
-  float t_surface = depth > 0.0 ? ray_scale * u_near / depth : kFar;
-
-  // A camera a hair below the bottom sphere (the ground mesh is an
-  // ellipsoid mapped onto it, up to float rounding) is lifted onto it.
-  vec3 camera = u_camera;
-  float r_camera = length(camera);
+  float r_camera = pixel.r_camera;
   float r_min = atmosphere.bottom_radius + 1.0;
-  if (r_camera < r_min) camera = r_camera > 0.0 ? camera * (r_min / r_camera) : vec3(0, 0, r_min);
 
   // Lowlands and hollows put the camera below the bottom sphere, and it is
   // lifted onto it. A ray that passes over every tile (depth 0) has cleared

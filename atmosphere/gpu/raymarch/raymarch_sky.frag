@@ -11,6 +11,7 @@ Real3 transmittance_lookup(IN(Atmosphere) atmosphere, Real r, Real mu) {
 }
 #include "atmosphere/shaders/sunlight.glsl"
 #include "atmosphere/shaders/ground.glsl"
+#include "atmosphere/gpu/sky_pixel.glsl"
 
 in vec2 v_ndc;
 layout(location = 0) out vec4 o_radiance;
@@ -24,23 +25,12 @@ uniform float u_near;
 
 void main() {
   Atmosphere atmosphere = block_atmosphere();
-  ivec2 pixel = ivec2(gl_FragCoord.xy);
-  float depth = texelFetch(u_depth, pixel, 0).r;
-  vec3 surface = depth > 0.0 ? texelFetch(u_surface, pixel, 0).rgb : vec3(0.0);
-
-  vec3 ray = u_ray_from_ndc * vec3(v_ndc, 1.0);
-  float ray_scale = length(ray);
-  vec3 dir = ray / ray_scale;
-  // Reversed-Z with an infinite far plane: view depth = near / depth.
-  const float kFar = 3.0e38;
-  float t_surface = depth > 0.0 ? ray_scale * u_near / depth : kFar;
-
-  // A camera a hair below the bottom sphere (the ground mesh is an
-  // ellipsoid mapped onto it, up to float rounding) is lifted onto it.
-  vec3 camera = u_camera;
-  float r_camera = length(camera);
-  float r_min = atmosphere.bottom_radius + 1.0;
-  if (r_camera < r_min) camera *= r_min / r_camera;
+  SkyPixel pixel = sky_pixel(atmosphere, u_depth, u_surface, v_ndc, u_ray_from_ndc, u_near, u_camera);
+  float depth = pixel.depth;
+  vec3 surface = pixel.surface;
+  vec3 dir = pixel.dir;
+  float t_surface = pixel.t_surface;
+  vec3 camera = pixel.camera;
 
   vec3 radiance = vec3(0.0);
   vec3 optical_depth = vec3(0.0);

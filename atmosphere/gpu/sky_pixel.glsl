@@ -1,0 +1,33 @@
+// What every per-pixel sky pass starts from: the pixel's view ray in
+// atmosphere space, the distance to the opaque surface under it (from the
+// reversed-Z depth with an infinite far plane: view depth = near / depth)
+// and the radiance that surface leaves, and the camera, lifted onto the
+// bottom sphere when it is a hair below it (the ground mesh is an
+// ellipsoid mapped onto the sphere, up to float rounding).
+struct SkyPixel {
+  float depth;      // reversed-Z; 0 where nothing opaque was drawn
+  vec3 surface;     // radiance leaving the surface toward the camera; 0 without one
+  vec3 dir;         // unit view direction
+  float t_surface;  // distance to the surface along dir; 3e38 without one
+  vec3 camera;      // lifted to at least 1 m above the bottom sphere
+  float r_camera;   // the camera's distance from the centre before the lift
+};
+
+SkyPixel sky_pixel(Atmosphere atmosphere, sampler2D depth_texture, sampler2D surface_texture,
+                   vec2 ndc, mat3 ray_from_ndc, float near, vec3 camera) {
+  SkyPixel p;
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  p.depth = texelFetch(depth_texture, pixel, 0).r;
+  p.surface = p.depth > 0.0 ? texelFetch(surface_texture, pixel, 0).rgb : vec3(0.0);
+  vec3 ray = ray_from_ndc * vec3(ndc, 1.0);
+  float ray_scale = length(ray);
+  p.dir = ray / ray_scale;
+  p.t_surface = p.depth > 0.0 ? ray_scale * near / p.depth : 3.0e38;
+  p.r_camera = length(camera);
+  float r_min = atmosphere.bottom_radius + 1.0;
+  p.camera = camera;
+  if (p.r_camera < r_min) {
+    p.camera = p.r_camera > 0.0 ? camera * (r_min / p.r_camera) : vec3(0, 0, r_min);
+  }
+  return p;
+}
