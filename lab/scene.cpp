@@ -108,6 +108,26 @@ std::vector<Scene> canonical_scenes() {
   return scenes;
 }
 
+PathBudget shipped_reference_paths(const std::string& scene_name) {
+  struct Shipped {
+    const char* scene;
+    PathBudget paths;
+  };
+  static const Shipped kShipped[] = {
+      {"earth_noon", PathBudget({40960, 147456, 335872})},
+      {"earth_400km", PathBudget({98304, 180224, 655360})},
+      {"earth_sunset", PathBudget({24576, 126976, 811008})},
+      {"earth_twilight", PathBudget({430080, 339968, 704512})},
+      {"mars_noon", PathBudget(196608)},
+      {"mars_sunset", PathBudget({184320, 143360, 131072})},
+  };
+  find_scene(scene_name);  // an unknown name fails here
+  for (const Shipped& s : kShipped) {
+    if (scene_name == s.scene) return s.paths;
+  }
+  return PathBudget(4096);
+}
+
 Scene find_scene(const std::string& name) {
   std::string known;
   for (const Scene& s : canonical_scenes()) {

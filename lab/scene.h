@@ -41,6 +41,12 @@ std::vector<Scene> canonical_scenes();
 // A canonical scene by name; InputError naming the known ones otherwise.
 Scene find_scene(const std::string& name);
 
+// The paths per pixel of a canonical scene's shipped 32x16 reference
+// (data/reference), per channel where they differ: the first six were set
+// for a noise below a tenth of the best technique's error, the newer six
+// hold 4096. InputError for a name that is not a canonical scene.
+PathBudget shipped_reference_paths(const std::string& scene_name);
+
 // What a scene renders: its body, and the body's atmosphere with the
 // scene's variant applied. InputError for an airless body.
 Body scene_body(const Scene& scene);

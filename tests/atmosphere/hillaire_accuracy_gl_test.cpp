@@ -34,7 +34,6 @@ Scene small_scene(const std::string& name) {
 
 struct AccuracyCase {
   const char* scene;
-  PathBudget spp;  // of the cached reference (its noise: README, "Accuracy")
   // Largest relative RMSE (any channel, sun disk excluded) let through:
   // today's measured error plus a fifth, so that a regression fails. The
   // goals (2 % noon and 400 km, 5 % sunset, twilight and Mars) hold but
@@ -47,20 +46,13 @@ void PrintTo(const AccuracyCase& c, std::ostream* os) { *os << c.scene; }
 
 // Today's errors + 20 %: a regression guard.
 const AccuracyCase kCases[] = {
-    {"earth_noon", PathBudget({40960, 147456, 335872}), 0.011},
-    {"earth_400km", PathBudget({98304, 180224, 655360}), 0.016},
-    {"earth_sunset", PathBudget({24576, 126976, 811008}), 0.025},
-    {"earth_twilight", PathBudget({430080, 339968, 704512}), 0.035},
-    {"mars_noon", 196608, 0.032},
-    {"mars_sunset", PathBudget({184320, 143360, 131072}), 0.085},
+    {"earth_noon", 0.011},
+    {"earth_400km", 0.016},
+    {"earth_sunset", 0.025},
+    {"earth_twilight", 0.035},
+    {"mars_noon", 0.032},
+    {"mars_sunset", 0.085},
 };
-
-PathBudget reference_spp(const std::string& scene) {
-  for (const AccuracyCase& c : kCases) {
-    if (scene == c.scene) return c.spp;
-  }
-  return 0;
-}
 
 class HillaireAccuracyGLTest : public ::testing::TestWithParam<AccuracyCase> {
  protected:
@@ -76,13 +68,13 @@ TEST_P(HillaireAccuracyGLTest, MatchesTheGroundTruth) {
   Body body = scene_body(scene);
   AtmosphereModel model = scene_atmosphere(scene, body);
   auto shipped = shipped_reference_dir() /
-                 reference_cache_file(scene, model, c.spp, ReferenceMode::kRgb).filename();
+                 reference_cache_file(scene, model, shipped_reference_paths(c.scene), ReferenceMode::kRgb).filename();
   ASSERT_TRUE(std::filesystem::exists(shipped) &&
               std::filesystem::exists(reference_noise_file(shipped)))
       << shipped << " or its noise is not shipped; render it with `planet reference --scene "
-      << c.scene << " --spp " << c.spp.label() << " --width " << kWidth << " --height " << kHeight
+      << c.scene << " --spp " << shipped_reference_paths(c.scene).label() << " --width " << kWidth << " --height " << kHeight
       << " --out FILE` under PLANET_CACHE_DIR=data and commit it";
-  ImageRGB reference = reference_image(scene, c.spp);
+  ImageRGB reference = reference_image(scene, shipped_reference_paths(c.scene));
   ImageRGB technique = render_scene_with(scene, "hillaire");
   TechniqueAccuracy accuracy = measure_accuracy(scene, technique, reference);
   std::printf("%s: relative RMSE %.2f%% %.2f%% %.2f%% (open sky %.2f%% %.2f%% %.2f%%)\n", c.scene,
@@ -109,7 +101,7 @@ TEST_P(HillaireAccuracyGLTest, MatchesTheGroundTruth) {
 TEST_F(HillaireAccuracyGLTest, ScatteringOrdersBeatThePapersSeries) {
   for (const char* name : {"earth_noon", "earth_twilight", "mars_noon"}) {
     Scene scene = small_scene(name);
-    ImageRGB reference = reference_image(scene, reference_spp(name));
+    ImageRGB reference = reference_image(scene, shipped_reference_paths(name));
     double orders =
         measure_accuracy(scene, render_scene_with(scene, "hillaire"), reference).worst_relative();
     double paper = measure_accuracy(scene, render_scene_with(scene, "hillaire2020"), reference)
