@@ -33,6 +33,8 @@ expect "bruneton: orders=0 is outside 1 to 50" "$planet" fly --technique bruneto
 expect "bruneton: orders=51 is outside 1 to 50" "$planet" accuracy --technique bruneton:orders=51
 expect "--technique: bruneton: a scattering table of 8192 x 256 x 128 texels" \
   "$planet" accuracy --scene earth_noon --technique bruneton:nu_size=64,mu_s_size=128,r_size=128
+expect "--technique: bruneton: tables of 2048 x 512 x 128 texels need 14336 MiB, more than the 3072 MiB" \
+  "$planet" accuracy --scene earth_noon --technique bruneton:r_size=128,mu_size=512,mu_s_size=128,nu_size=16
 expect "--technique: bruneton: mu_size=7 must be even" \
   "$planet" accuracy --scene earth_noon --technique bruneton:mu_size=7
 expect "raymarch: light_steps=2.5 is not a whole number" "$planet" fly --technique raymarch:light_steps=2.5
