@@ -1,6 +1,6 @@
 // planet probe oneil-fit: the oneil technique's scale functions for a body,
 // fitted to its Rayleigh and Mie scale heights, with their worst errors of
-// optical depth, beside the chapter's hard-coded polynomial's.
+// optical depth, beside the chapter's fixed polynomial's.
 #include "apps/commands.h"
 #include "atmosphere/math/oneil_math.h"
 #include "sim/body.h"

@@ -54,7 +54,7 @@ struct ScaleError {
 };
 ScaleError measure_scale_error(const Atmosphere& atmosphere, const OneilScale& scale);
 
-// The chapter's hard-coded polynomial, for a component of scale height H.
+// The chapter's fixed polynomial, for a component of scale height H.
 OneilScale chapter_scale(Real scale_height);
 // The fitted form (oneil_functions.glsl) by least squares on the logarithm
 // of the column's ratio to its closed-form part, then reweighted toward the

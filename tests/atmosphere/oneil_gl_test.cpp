@@ -109,7 +109,7 @@ ImageRGB render_without_absorber(const Scene& scene, const std::string& techniqu
 
 // The requirement: on Mars and the asteroid, whose ratios of scale
 // height to thickness are not the chapter's, the fitted scale function
-// beats the hard-coded one in every channel. Measured against what the
+// beats the fixed one in every channel. Measured against what the
 // scale function approximates, single scattering, by the raymarch
 // baseline at its fine quality, with the absorber (which O'Neil's model
 // lacks) out of both; the path-traced references hold multiple scattering,

@@ -7,7 +7,7 @@
 // and radiance, get their aerial perspective on a screen-space grid. The
 // scale function is fitted to the body's own Rayleigh and Mie scale heights
 // when the model changes (atmosphere/math/oneil_math.h), or is the
-// chapter's hard-coded polynomial.
+// chapter's fixed polynomial.
 #include "atmosphere/gpu/atmosphere_block.h"
 #include "atmosphere/gpu/technique.h"
 #include "atmosphere/math/oneil_math.h"
