@@ -17,11 +17,19 @@ void GpuTimer::begin(const std::string& pass) {
     q = free_.back();
     free_.pop_back();
   }
+  if (synchronous_) glFinish();
   pending_.push_back({pass, q, std::chrono::steady_clock::now()});
   glBeginQuery(GL_TIME_ELAPSED, q);
 }
 
-void GpuTimer::end() { glEndQuery(GL_TIME_ELAPSED); }
+void GpuTimer::end() {
+  glEndQuery(GL_TIME_ELAPSED);
+  if (!synchronous_) return;
+  glFinish();
+  Pending& p = pending_.back();
+  p.wall_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - p.begun).count();
+}
 
 std::vector<PassTiming> GpuTimer::collect() {
   std::vector<PassTiming> out;
@@ -35,7 +43,7 @@ std::vector<PassTiming> GpuTimer::collect() {
     double wall_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - p.begun)
             .count();
-    out.push_back({p.pass, std::min(double(ns) * 1e-6, wall_ms)});
+    out.push_back({p.pass, std::min(double(ns) * 1e-6, wall_ms), p.wall_ms});
     free_.push_back(p.query);
   }
   pending_.clear();

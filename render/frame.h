@@ -46,6 +46,9 @@ class FrameRenderer {
   // window must.
   void set_terrain_wait(double seconds) { terrain_wait_s_ = seconds; }
   const TerrainStats& terrain_stats() const { return terrain_stats_; }
+  // Each pass waits for the GL before and after it, and reports its wall
+  // time too (PassTiming::wall_ms): for benchmarks.
+  void set_synchronous_timing(bool synchronous) { timer_.set_synchronous(synchronous); }
   TerrainRenderer* terrain() { return terrain_.get(); }
 
   int width() const { return width_; }
@@ -65,6 +68,9 @@ class FrameRenderer {
 
   int width_, height_;
   Texture depth_, surface_, hdr_, ldr_;
+  // The sky target's stencil: cleared before the technique draws, for the
+  // technique's own masks (which pixels each of its passes shades).
+  Texture sky_stencil_;
   Framebuffer surface_fbo_, hdr_fbo_, ldr_fbo_;
   Program tonemap_program_;
   Buffer atmosphere_block_;
