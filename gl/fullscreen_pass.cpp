@@ -13,6 +13,7 @@ void FullscreenPass::begin(GLuint framebuffer, int width, int height,
   glBindFramebuffer(GL_FRAMEBUFFER, framebuffer);
   glViewport(0, 0, width, height);
   glDisable(GL_DEPTH_TEST);
+  glDisable(GL_STENCIL_TEST);
   glDisable(GL_BLEND);
   program.use();
 }

@@ -27,11 +27,12 @@ Texture make_texture_3d(GLenum internal_format, int width, int height, int depth
   return Texture(id);
 }
 
-Framebuffer make_framebuffer(GLuint color, GLuint depth) {
+Framebuffer make_framebuffer(GLuint color, GLuint depth, GLuint stencil) {
   GLuint fbo = 0;
   glCreateFramebuffers(1, &fbo);
   glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, color, 0);
   if (depth) glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, depth, 0);
+  if (stencil) glNamedFramebufferTexture(fbo, GL_STENCIL_ATTACHMENT, stencil, 0);
   if (glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
     glDeleteFramebuffers(1, &fbo);
     throw SystemError("framebuffer incomplete");

@@ -43,9 +43,9 @@ using VertexArray = GlName<delete_vertex_array>;
 // Immutable 2D and 3D textures with linear filtering and clamped edges.
 Texture make_texture_2d(GLenum internal_format, int width, int height);
 Texture make_texture_3d(GLenum internal_format, int width, int height, int depth);
-// A framebuffer of a colour texture and, unless 0, a depth texture;
-// SystemError when GL finds it incomplete.
-Framebuffer make_framebuffer(GLuint color, GLuint depth);
+// A framebuffer of a colour texture and, unless 0, a depth texture and a
+// stencil texture; SystemError when GL finds it incomplete.
+Framebuffer make_framebuffer(GLuint color, GLuint depth, GLuint stencil = 0);
 // Binds the framebuffer and its viewport, clears its colour and its depth
 // to the far plane of reversed Z (0), and tests depth as reversed Z wants
 // it (nearer is greater): how every pass of opaque surfaces begins.

@@ -25,8 +25,9 @@ FrameRenderer::FrameRenderer(int width, int height)
       surface_(make_texture_2d(GL_RGBA32F, width, height)),
       hdr_(make_texture_2d(GL_RGBA32F, width, height)),
       ldr_(make_texture_2d(GL_RGBA8, width, height)),
+      sky_stencil_(make_texture_2d(GL_STENCIL_INDEX8, width, height)),
       surface_fbo_(make_framebuffer(surface_.id(), depth_.id())),
-      hdr_fbo_(make_framebuffer(hdr_.id(), 0)),
+      hdr_fbo_(make_framebuffer(hdr_.id(), 0, sky_stencil_.id())),
       ldr_fbo_(make_framebuffer(ldr_.id(), 0)),
       tonemap_program_(
           Program::graphics("gl/shaders/fullscreen.vert", "render/shaders/tonemap.frag")),
@@ -95,6 +96,8 @@ FrameStats FrameRenderer::render(const Camera& camera, const glm::dvec3& sun_dir
     sky.depth_texture = depth_.id();
     sky.surface_texture = surface_.id();
     sky.target_framebuffer = hdr_fbo_.id();
+    const GLint zero = 0;
+    glClearNamedFramebufferiv(hdr_fbo_.id(), GL_STENCIL, 0, &zero);
     technique_->render(sky, timer_);
   } else {
     // Airless: the surfaces are the image.

@@ -39,7 +39,11 @@ struct SkyFrame {
   // atmosphere between them and the camera.
   GLuint depth_texture = 0;
   GLuint surface_texture = 0;
-  // Output: an RGBA16F/32F framebuffer of the final HDR radiance.
+  // Output: an RGBA16F/32F framebuffer of the final HDR radiance, with an
+  // 8-bit stencil cleared to 0 that the technique may use to restrict its
+  // passes to the pixels they serve (a fragment shader's branches cost
+  // their every side on a SIMD rasteriser such as llvmpipe; a pixel that
+  // fails an early stencil test costs nothing). Leave the stencil test off.
   GLuint target_framebuffer = 0;
 };
 
