@@ -13,17 +13,19 @@ uniform vec3 u_sun_dir;
 uniform float u_near;
 uniform vec2 u_viewport;
 uniform vec2 u_scale_heights;  // Rayleigh, Mie
-uniform int u_scale_kind;
 uniform float u_rayleigh_c[kOneilTerms];
 uniform float u_mie_c[kOneilTerms];
 
 layout(binding = 0) uniform sampler2D u_depth;
 layout(binding = 1) uniform sampler2D u_surface;
 
+// The kind is the program's constant (SCALE_KIND), not a uniform: the
+// compiler then drops the other kind's code, which a SIMD rasteriser would
+// otherwise run beside it.
 OneilScale rayleigh_scale() {
   OneilScale s;
   s.scale_height = u_scale_heights.x;
-  s.kind = u_scale_kind;
+  s.kind = SCALE_KIND;
   for (int i = 0; i < kOneilTerms; ++i) s.c[i] = u_rayleigh_c[i];
   return s;
 }
@@ -31,7 +33,7 @@ OneilScale rayleigh_scale() {
 OneilScale mie_scale() {
   OneilScale s;
   s.scale_height = u_scale_heights.y;
-  s.kind = u_scale_kind;
+  s.kind = SCALE_KIND;
   for (int i = 0; i < kOneilTerms; ++i) s.c[i] = u_mie_c[i];
   return s;
 }
@@ -70,6 +72,39 @@ float surface_distance(ivec2 pixel, float ray_scale) {
 bool ray_hits_ground(Atmosphere atmosphere, vec3 camera, vec3 dir, out float t_ground) {
   float t_far;
   return ray_sphere(camera, dir, atmosphere.bottom_radius, t_ground, t_far) && t_ground > 0.0;
+}
+
+// A pixel's own ray and what it meets.
+struct OneilPixel {
+  ivec2 pixel;
+  vec3 dir;         // unit
+  vec3 camera;      // oneil_camera's
+  float t_surface;  // distance to the drawn surface; kFar for none
+  bool hits_ground;
+  float t_ground;   // distance to the bottom sphere, where hits_ground
+};
+
+// frag_coord: the fragment's gl_FragCoord.xy.
+OneilPixel oneil_pixel(Atmosphere atmosphere, vec2 frag_coord) {
+  OneilPixel p;
+  p.pixel = ivec2(frag_coord);
+  vec3 ray = ray_at_ndc(frag_coord / u_viewport * 2.0 - 1.0);
+  float ray_scale = length(ray);
+  p.dir = ray / ray_scale;
+  p.camera = oneil_camera(atmosphere);
+  p.t_surface = surface_distance(p.pixel, ray_scale);
+  p.hits_ground = ray_hits_ground(atmosphere, p.camera, p.dir, p.t_ground);
+  return p;
+}
+
+// The radiance leaving what the pixel's ray meets: the drawn surface, or
+// where none was drawn (the mesh's flat facets sag below the true
+// ellipsoid near the horizon) the bottom sphere itself, Lambertian with the
+// model's albedo.
+vec3 oneil_surface(Atmosphere atmosphere, OneilPixel p) {
+  if (p.t_surface < kFar) return texelFetch(u_surface, p.pixel, 0).rgb;
+  return atmosphere.solar_irradiance *
+         ground_radiance(atmosphere, p.camera + p.t_ground * p.dir, u_sun_dir);
 }
 
 // The light along the ray camera + t dir (unit dir) up to t_surface, the

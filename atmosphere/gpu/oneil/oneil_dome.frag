@@ -1,8 +1,10 @@
 // The sky dome's pixels: the interpolated light with the phase functions of
-// the pixel's own ray, and the sun's disk through the transmittance; the
-// pixels whose ray meets a surface or the ground are the grid's.
+// the pixel's own ray, and the sun's disk through the transmittance. Only
+// the pixels the stencil marks as sky are shaded; those whose ray meets a
+// surface or the ground are the grid's.
 #include "atmosphere/gpu/oneil/oneil_common.glsl"
 
+layout(early_fragment_tests) in;
 in vec3 v_rayleigh;
 in vec3 v_mie;
 in vec3 v_transmittance;
@@ -10,12 +12,7 @@ layout(location = 0) out vec4 o_radiance;
 
 void main() {
   Atmosphere atmosphere = block_atmosphere();
-  ivec2 pixel = ivec2(gl_FragCoord.xy);
-  if (texelFetch(u_depth, pixel, 0).r > 0.0) discard;
-  vec3 camera = oneil_camera(atmosphere);
   vec3 dir = normalize(ray_at_ndc(gl_FragCoord.xy / u_viewport * 2.0 - 1.0));
-  float t_ground;
-  if (ray_hits_ground(atmosphere, camera, dir, t_ground)) discard;
   vec3 radiance = oneil_phased(atmosphere, v_rayleigh, v_mie, dir) +
                   v_transmittance * sun_disk_radiance(atmosphere, dot(dir, u_sun_dir));
   o_radiance = oneil_output(radiance);

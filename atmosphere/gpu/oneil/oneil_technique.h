@@ -11,6 +11,7 @@
 #include "atmosphere/gpu/atmosphere_block.h"
 #include "atmosphere/gpu/technique.h"
 #include "atmosphere/math/oneil_math.h"
+#include "gl/fullscreen_pass.h"
 #include "gl/program.h"
 #include "gl/texture.h"
 
@@ -49,10 +50,11 @@ class OneilTechnique final : public AtmosphereTechnique {
   oneil::BodyScales fitted_;
   oneil::OneilScale rayleigh_, mie_;
   Buffer block_;
-  Program dome_program_, ground_program_;
+  Program classify_program_, dome_program_, ground_program_, pixel_program_;
+  FullscreenPass fullscreen_;
   VertexArray dome_vao_, grid_vao_;
   Buffer dome_indices_, grid_indices_;
-  GLsizei dome_index_count_ = 0, grid_index_count_ = 0;
+  GLsizei grid_index_count_ = 0;
   int grid_width_ = 0, grid_height_ = 0;
 };
 
