@@ -1,8 +1,21 @@
 // Bruneton 2017's rendering: the sky, the sun disk, and the aerial
 // perspective over the opaque surfaces, from the precomputed tables, at any
 // altitude (a camera in space looks from where its ray enters the top).
+// One program per PASS (bruneton_technique.cpp), each restricted by the
+// stencil to the pixels it serves, since a SIMD rasteriser runs every side
+// of a branch: kClassifyPass marks, with u_class 1, the pixels whose ray
+// meets a surface or the ground, and with u_class 2 those whose ray misses
+// the atmosphere, giving them the sun's disk; kSkyPass draws the sky
+// through the atmosphere, kAerialPass the surfaces and the ground.
 #include "atmosphere/gpu/bruneton/bruneton_common.glsl"
 #include "atmosphere/gpu/sky_pixel.glsl"
+
+#define kClassifyPass 0
+#define kSkyPass 1
+#define kAerialPass 2
+#if PASS != kClassifyPass
+layout(early_fragment_tests) in;
+#endif
 
 in vec2 v_ndc;
 layout(location = 0) out vec4 o_radiance;
@@ -18,6 +31,7 @@ uniform vec3 u_camera;  // atmosphere space, metres
 uniform mat3 u_ray_from_ndc;
 uniform vec3 u_sun_dir;
 uniform float u_near;
+uniform int u_class;  // kClassifyPass's
 
 // The scattering table and single Mie at (r, mu, mu_s, nu); with COMBINED,
 // Mie's red only, the rest rebuilt from the ratio of the coefficients
@@ -131,27 +145,33 @@ void main() {
   Atmosphere atmosphere = block_atmosphere();
   SkyPixel pixel = sky_pixel(atmosphere, u_depth, u_surface, v_ndc, u_ray_from_ndc, u_near, u_camera);
   float depth = pixel.depth;
-  vec3 surface = pixel.surface;
   vec3 dir = pixel.dir;
-  float t_surface = pixel.t_surface;
   vec3 camera = pixel.camera;
-
   float t_ground_near, t_ground_far;
   bool hits_ground = ray_sphere(camera, dir, atmosphere.bottom_radius, t_ground_near, t_ground_far) &&
                      t_ground_near > 0.0;
   vec3 radiance, transmittance;
-  if (depth > 0.0 || hits_ground) {
-    // The air in front of a surface ends at the bottom sphere (see
-    // hillaire_sky.frag); where no surface was drawn, the sphere is the
-    // ground, lit by the sun and the sky.
-    float t = depth > 0.0 ? (hits_ground ? min(t_surface, t_ground_near) : t_surface) : t_ground_near;
-    if (depth == 0.0) surface = ground_radiance_at(atmosphere, camera + t_ground_near * dir);
-    vec3 in_scatter = sky_radiance_to_point(atmosphere, camera, camera + t * dir, transmittance);
-    radiance = in_scatter + transmittance * surface;
-  } else {
-    radiance = sky_radiance(atmosphere, camera, dir, transmittance);
-    radiance += transmittance * sun_disk_radiance(atmosphere, dot(dir, u_sun_dir));
-  }
+#if PASS == kClassifyPass
+  float t_top_near, t_top_far;
+  bool in_atmosphere = ray_sphere(camera, dir, atmosphere.top_radius, t_top_near, t_top_far) &&
+                       t_top_far > 0.0;
+  bool meets_ground = depth > 0.0 || hits_ground;
+  if (u_class == 1 ? !meets_ground : meets_ground || in_atmosphere) discard;
+  radiance = sun_disk_radiance(atmosphere, dot(dir, u_sun_dir));
+#elif PASS == kAerialPass
+  // The air in front of a surface ends at the bottom sphere (see
+  // hillaire_sky.frag); where no surface was drawn, the sphere is the
+  // ground, lit by the sun and the sky.
+  float t_surface = pixel.t_surface;
+  vec3 surface = pixel.surface;
+  float t = depth > 0.0 ? (hits_ground ? min(t_surface, t_ground_near) : t_surface) : t_ground_near;
+  if (depth == 0.0) surface = ground_radiance_at(atmosphere, camera + t_ground_near * dir);
+  vec3 in_scatter = sky_radiance_to_point(atmosphere, camera, camera + t * dir, transmittance);
+  radiance = in_scatter + transmittance * surface;
+#else
+  radiance = sky_radiance(atmosphere, camera, dir, transmittance);
+  radiance += transmittance * sun_disk_radiance(atmosphere, dot(dir, u_sun_dir));
+#endif
   // Within half-float range, so that a 16-bit target cannot overflow.
   o_radiance = vec4(min(radiance, vec3(6.0e4)), 1.0);
 }

@@ -25,9 +25,9 @@ namespace {
 // shaders change (the code around the shaders, say).
 constexpr int kTablesVersion = 3;
 constexpr const char* kPrecomputeShaders[] = {
-    "transmittance.comp",       "direct_irradiance.comp", "single_scattering.comp",
-    "scattering_density.comp",  "indirect_irradiance.comp", "multiple_scattering.comp",
-    "geometric_tail.comp",      "irradiance_tail.comp",     "ground_irradiance.comp"};
+    "transmittance.comp",      "direct_irradiance.comp",   "single_scattering.comp",
+    "scattering_density.comp", "indirect_irradiance.comp", "multiple_scattering.comp",
+    "geometric_tail.comp",     "irradiance_tail.comp",     "ground_irradiance.comp"};
 // What the tables may take of memory at the most: a bad quality is refused
 // with a message, not an out-of-memory.
 constexpr double kMaxTableBytes = 3.0 * 1024 * 1024 * 1024;
@@ -61,33 +61,42 @@ BrunetonTechnique::BrunetonTechnique(Settings settings)
     : settings_(settings), block_(make_buffer(sizeof(AtmosphereBlock), nullptr)) {
   const Settings& s = settings_;
   if (s.mu % 2 != 0) {
-    throw InputError(fmt::format("bruneton: mu_size={} must be even (half for the rays that "
-                                 "meet the ground, half for those that do not)",
-                                 s.mu));
+    throw InputError(
+        fmt::format("bruneton: mu_size={} must be even (half for the rays that "
+                    "meet the ground, half for those that do not)",
+                    s.mu));
   }
   GLint max_3d = 0, max_2d = 0;
   glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max_3d);
   glGetIntegerv(GL_MAX_TEXTURE_SIZE, &max_2d);
   int width = s.nu * s.mu_s;
   if (width > max_3d || s.mu > max_3d || s.r > max_3d) {
-    throw InputError(fmt::format("bruneton: a scattering table of {} x {} x {} texels "
-                                 "(nu_size x mu_s_size, mu_size, r_size) is larger than this GL's "
-                                 "3D textures ({} a side)",
-                                 width, s.mu, s.r, max_3d));
+    throw InputError(
+        fmt::format("bruneton: a scattering table of {} x {} x {} texels "
+                    "(nu_size x mu_s_size, mu_size, r_size) is larger than this GL's "
+                    "3D textures ({} a side)",
+                    width, s.mu, s.r, max_3d));
   }
   if (s.transmittance_width > max_2d || s.irradiance_width > max_2d) {
-    throw InputError(fmt::format("bruneton: a table is wider than this GL's 2D textures ({})",
-                                 max_2d));
+    throw InputError(
+        fmt::format("bruneton: a table is wider than this GL's 2D textures ({})", max_2d));
   }
   // Seven 3D tables at most at once while precomputing, RGBA32F.
   double bytes = 7.0 * 16.0 * double(width) * s.mu * s.r;
   if (bytes > kMaxTableBytes) {
-    throw InputError(fmt::format("bruneton: tables of {} x {} x {} texels need {:.0f} MiB, more "
-                                 "than the {:.0f} MiB this program gives them",
-                                 width, s.mu, s.r, bytes / 1048576.0, kMaxTableBytes / 1048576.0));
+    throw InputError(
+        fmt::format("bruneton: tables of {} x {} x {} texels need {:.0f} MiB, more "
+                    "than the {:.0f} MiB this program gives them",
+                    width, s.mu, s.r, bytes / 1048576.0, kMaxTableBytes / 1048576.0));
   }
-  sky_program_ = Program::graphics("gl/shaders/fullscreen.vert",
-                                   "atmosphere/gpu/bruneton/bruneton_sky.frag", defines({}));
+  auto pass = [&](const char* which) {
+    return Program::graphics("gl/shaders/fullscreen.vert",
+                             "atmosphere/gpu/bruneton/bruneton_sky.frag",
+                             defines({fmt::format("PASS {}", which)}));
+  };
+  classify_program_ = pass("kClassifyPass");
+  sky_program_ = pass("kSkyPass");
+  aerial_program_ = pass("kAerialPass");
   ground_irradiance_ = make_texture_2d(GL_RGBA32F, kGroundIrradianceWidth, 1);
 }
 
@@ -119,15 +128,28 @@ std::string BrunetonTechnique::cache_key(const AtmosphereModel& model) const {
   AtmosphereBlock block = make_atmosphere_block(model);
   h.bytes(&block, sizeof(block));
   const Settings& s = settings_;
-  const int values[] = {kTablesVersion, s.transmittance_width, s.transmittance_height,
-                        s.irradiance_width, s.irradiance_height, s.r, s.mu, s.mu_s, s.nu,
-                        s.orders, s.half, s.combined, s.integration_steps, s.sphere_samples,
-                        s.transmittance_steps, s.tail};
+  const int values[] = {kTablesVersion,
+                        s.transmittance_width,
+                        s.transmittance_height,
+                        s.irradiance_width,
+                        s.irradiance_height,
+                        s.r,
+                        s.mu,
+                        s.mu_s,
+                        s.nu,
+                        s.orders,
+                        s.half,
+                        s.combined,
+                        s.integration_steps,
+                        s.sphere_samples,
+                        s.transmittance_steps,
+                        s.tail};
   h.bytes(values, sizeof(values));
   // The programs' text as compiled, includes and all: a changed shader
   // never serves tables it did not make.
   for (const char* file : kPrecomputeShaders) {
-    std::string source = load_shader_source(std::filesystem::path("atmosphere/gpu/bruneton") / file);
+    std::string source =
+        load_shader_source(std::filesystem::path("atmosphere/gpu/bruneton") / file);
     h.bytes(source.data(), source.size());
   }
   double mu_s_min = bruneton_mu_s_min(model);
@@ -148,13 +170,15 @@ void BrunetonTechnique::update(const AtmosphereModel& model) {
   transmittance_ = make_texture_2d(GL_RGBA32F, s.transmittance_width, s.transmittance_height);
   irradiance_ = make_texture_2d(GL_RGBA32F, s.irradiance_width, s.irradiance_height);
   scattering_ = make_texture_3d(format, width, s.mu, s.r);
-  single_mie_ = s.combined ? make_texture_3d(format, 1, 1, 1) : make_texture_3d(format, width, s.mu, s.r);
+  single_mie_ =
+      s.combined ? make_texture_3d(format, 1, 1, 1) : make_texture_3d(format, width, s.mu, s.r);
 
   std::vector<CachedTable> sizes = {{s.transmittance_width, s.transmittance_height, 1, {}},
                                     {s.irradiance_width, s.irradiance_height, 1, {}},
                                     {width, s.mu, s.r, {}}};
   if (!s.combined) sizes.push_back({width, s.mu, s.r, {}});
-  std::vector<const Texture*> textures = {&transmittance_, &irradiance_, &scattering_, &single_mie_};
+  std::vector<const Texture*> textures = {&transmittance_, &irradiance_, &scattering_,
+                                          &single_mie_};
   if (auto cached = read_bruneton_cache(key, sizes)) {
     for (size_t i = 0; i < cached->size(); ++i) {
       const CachedTable& t = (*cached)[i];
@@ -189,7 +213,8 @@ void BrunetonTechnique::precompute() {
   const Settings& s = settings_;
   const int width = s.nu * s.mu_s;
   auto compute = [&](const char* file, std::vector<std::string> more = {}) {
-    Program p = Program::compute(std::string("atmosphere/gpu/bruneton/") + file, defines(std::move(more)));
+    Program p =
+        Program::compute(std::string("atmosphere/gpu/bruneton/") + file, defines(std::move(more)));
     p.use();
     glUniform1f(p.uniform("u_mu_s_min"), float(mu_s_min_));
     return p;
@@ -221,8 +246,9 @@ void BrunetonTechnique::precompute() {
       // the process at once): nothing is kept, the cache is written whole
       // or not at all.
       if (InterruptScope::flag().load()) {
-        std::fprintf(stderr, "planet: interrupted: the bruneton tables were not finished and "
-                             "nothing of them is kept\n");
+        std::fprintf(stderr,
+                     "planet: interrupted: the bruneton tables were not finished and "
+                     "nothing of them is kept\n");
         std::exit(kInterruptedExitStatus);
       }
     }
@@ -339,8 +365,6 @@ void BrunetonTechnique::make_ground_irradiance() {
 }
 
 void BrunetonTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
-  timer.begin("sky");
-  sky_pass_.begin(frame.target_framebuffer, frame.width, frame.height, sky_program_);
   glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, block_.id());
   glBindTextureUnit(0, frame.depth_texture);
   glBindTextureUnit(1, frame.surface_texture);
@@ -348,13 +372,37 @@ void BrunetonTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   glBindTextureUnit(3, scattering_.id());
   glBindTextureUnit(4, single_mie_.id());
   glBindTextureUnit(5, irradiance_.id());
-  glUniform1f(sky_program_.uniform("u_mu_s_min"), float(mu_s_min_));
-  glUniform3fv(sky_program_.uniform("u_camera"), 1, glm::value_ptr(glm::vec3(frame.camera_atmo)));
-  glUniformMatrix3fv(sky_program_.uniform("u_ray_from_ndc"), 1, GL_FALSE,
-                     glm::value_ptr(frame.atmo_ray_from_ndc));
-  glUniform3fv(sky_program_.uniform("u_sun_dir"), 1, glm::value_ptr(frame.sun_dir_atmo));
-  glUniform1f(sky_program_.uniform("u_near"), frame.near);
+  for (const Program* p : {&classify_program_, &sky_program_, &aerial_program_}) {
+    p->use();
+    glUniform1f(p->uniform("u_mu_s_min"), float(mu_s_min_));
+    glUniform3fv(p->uniform("u_camera"), 1, glm::value_ptr(glm::vec3(frame.camera_atmo)));
+    glUniformMatrix3fv(p->uniform("u_ray_from_ndc"), 1, GL_FALSE,
+                       glm::value_ptr(frame.atmo_ray_from_ndc));
+    glUniform3fv(p->uniform("u_sun_dir"), 1, glm::value_ptr(frame.sun_dir_atmo));
+    glUniform1f(p->uniform("u_near"), frame.near);
+  }
+  // The stencil's classes (see bruneton_sky.frag): 0 the sky through the
+  // atmosphere, 1 a surface or the ground, 2 space and the sun alone.
+  constexpr GLint kSky = 0, kGround = 1, kSpace = 2;
+  timer.begin("sky");
+  sky_pass_.begin(frame.target_framebuffer, frame.width, frame.height, classify_program_);
+  glEnable(GL_STENCIL_TEST);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  for (GLint pixel_class : {kGround, kSpace}) {
+    glStencilFunc(GL_ALWAYS, pixel_class, 0xff);
+    glUniform1i(classify_program_.uniform("u_class"), pixel_class);
+    sky_pass_.draw();
+  }
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  glStencilFunc(GL_EQUAL, kSky, 0xff);
+  sky_program_.use();
   sky_pass_.draw();
+  timer.end();
+  timer.begin("aerial");
+  glStencilFunc(GL_EQUAL, kGround, 0xff);
+  aerial_program_.use();
+  sky_pass_.draw();
+  glDisable(GL_STENCIL_TEST);
   timer.end();
 }
 
