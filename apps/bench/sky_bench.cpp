@@ -4,13 +4,17 @@
 // pass (counters, ms) and in total (manual time, the atmosphere's passes:
 // the surface and the tone map are the frame's, not the technique's), and
 // the technique's cost as a ratio to raymarch on the same view in the same
-// run. The tables a technique computes once per model (Bruneton's
+// run. Each pass waits for the GL before and after it, so that its time is
+// its own, and its wall time is kept too (wall_ms, wall_over_raymarch; the
+// whole frame's in frame_wall_ms): on llvmpipe the timer queries leave out
+// the vertex shaders, which run in the calling thread. The tables a technique computes once per model (Bruneton's
 // precompute) are made before timing; their cost is the precompute's,
 // reported by the technique itself.
 //
 //   planet bench --benchmark_filter=^Sky/
 //   planet bench --benchmark_filter='^Sky/.*/mars_'
 //   planet bench --benchmark_filter=^SkyQuality/    (every quality point, Earth ground)
+//   planet bench --benchmark_filter=^SkyHd/         (every technique, Earth ground, 1280x720)
 #include "atmosphere/gpu/registry.h"
 #include "core/data_paths.h"
 #include "gl/context.h"
@@ -18,6 +22,7 @@
 #include "sim/geodesy.h"
 
 #include <benchmark/benchmark.h>
+#include <fmt/format.h>
 #include <glm/gtc/constants.hpp>
 
 #include <algorithm>
@@ -58,8 +63,9 @@ double median(std::vector<double> v) {
 }
 
 struct Timed {
-  double total_ms = 0;  // median over the timed frames, atmosphere passes only
-  double wall_ms = 0;   // the same, wall time of the synchronous passes
+  double total_ms = 0;                    // median over the timed frames, atmosphere passes only
+  double wall_ms = 0;                     // the same, wall time of the synchronous passes
+  double frame_wall_ms = 0;               // every pass of the frame, wall time
   std::map<std::string, double> pass_ms;  // median per pass
 };
 
@@ -73,11 +79,12 @@ Timed time_frames(FrameRenderer& renderer, const Camera& camera, const glm::dvec
   // The first frame pays for llvmpipe's shader compilation and the
   // model's tables; not timed.
   renderer.render(camera, sun, 10.0);
-  std::vector<double> totals, walls;
+  std::vector<double> totals, walls, frame_walls;
   std::map<std::string, std::vector<double>> passes;
   for (int i = 0; i < kTimedFrames; ++i) {
-    double total = 0, wall = 0;
+    double total = 0, wall = 0, frame_wall = 0;
     for (const PassTiming& p : renderer.render(camera, sun, 10.0).passes) {
+      frame_wall += p.wall_ms;
       if (!is_atmosphere_pass(p.pass)) continue;
       passes[p.pass].push_back(p.gpu_ms);
       total += p.gpu_ms;
@@ -85,34 +92,36 @@ Timed time_frames(FrameRenderer& renderer, const Camera& camera, const glm::dvec
     }
     totals.push_back(total);
     walls.push_back(wall);
+    frame_walls.push_back(frame_wall);
   }
   Timed timed;
   timed.total_ms = median(totals);
   timed.wall_ms = median(walls);
+  timed.frame_wall_ms = median(frame_walls);
   for (auto& [pass, ms] : passes) timed.pass_ms[pass] = median(ms);
   return timed;
 }
 
-void BM_Sky(benchmark::State& state, std::string technique, std::string body_name,
-            SkyView view) {
+void BM_Sky(benchmark::State& state, std::string technique, std::string body_name, SkyView view,
+            int width, int height) {
   auto context = GlContext::create_headless();
   Body body = load_body(data_dir() / "planets" / (body_name + ".json"));
   AtmosphereModel model = load_atmosphere(body);
   Geodesy geodesy(body.shape);
   Geodetic place{glm::radians(46.5), glm::radians(8.0), view.altitude_m};
-  Camera camera = geodesy.camera_at(place, 0.0, glm::radians(view.pitch_deg),
-                                    glm::radians(view.fov_deg));
+  Camera camera =
+      geodesy.camera_at(place, 0.0, glm::radians(view.pitch_deg), glm::radians(view.fov_deg));
   glm::dvec3 sun = geodesy.body_from_enu(place) * glm::normalize(glm::dvec3(0.3, 0.5, 0.6));
 
-  std::string key = body_name + "/" + view.name;
+  std::string key = fmt::format("{}/{}/{}x{}", body_name, view.name, width, height);
   if (!raymarch_baseline().count(key)) {
-    FrameRenderer baseline(kWidth, kHeight);
+    FrameRenderer baseline(width, height);
     baseline.set_synchronous_timing(true);
     baseline.set_body(body, model, make_technique("raymarch"));
     raymarch_baseline()[key] = time_frames(baseline, camera, sun);
   }
   const Timed& raymarch = raymarch_baseline()[key];
-  FrameRenderer renderer(kWidth, kHeight);
+  FrameRenderer renderer(width, height);
   renderer.set_synchronous_timing(true);
   renderer.set_body(body, model, make_technique(technique));
   Timed timed;
@@ -125,6 +134,7 @@ void BM_Sky(benchmark::State& state, std::string technique, std::string body_nam
   state.counters["over_raymarch"] = timed.total_ms / std::max(raymarch.total_ms, 1e-9);
   state.counters["wall_ms"] = timed.wall_ms;
   state.counters["wall_over_raymarch"] = timed.wall_ms / std::max(raymarch.wall_ms, 1e-9);
+  state.counters["frame_wall_ms"] = timed.frame_wall_ms;
 }
 
 }  // namespace
@@ -141,7 +151,8 @@ void register_sky_benchmarks() {
     for (const SkyView& view : kViews) {
       for (const std::string& technique : names) {
         std::string name = "Sky/" + technique + "/" + body + "_" + view.name;
-        benchmark::RegisterBenchmark(name.c_str(), BM_Sky, technique, std::string(body), view)
+        benchmark::RegisterBenchmark(name.c_str(), BM_Sky, technique, std::string(body), view,
+                                     kWidth, kHeight)
             ->UseManualTime()
             ->Unit(benchmark::kMillisecond)
             ->Iterations(1);
@@ -154,11 +165,22 @@ void register_sky_benchmarks() {
     for (const auto& point : entry.quality_points) {
       std::string technique = entry.name + ":" + point.first;
       std::string name = "SkyQuality/" + technique + "/earth_ground";
-      benchmark::RegisterBenchmark(name.c_str(), BM_Sky, technique, std::string("earth"), kViews[0])
+      benchmark::RegisterBenchmark(name.c_str(), BM_Sky, technique, std::string("earth"), kViews[0],
+                                   kWidth, kHeight)
           ->UseManualTime()
           ->Unit(benchmark::kMillisecond)
           ->Iterations(1);
     }
+  }
+  // Every technique's whole frame from the ground at 1280x720, the size of
+  // Bruneton's demo (../shared/anchors times his own): SkyHd/<technique>.
+  for (const std::string& technique : names) {
+    std::string name = "SkyHd/" + technique + "/earth_ground";
+    benchmark::RegisterBenchmark(name.c_str(), BM_Sky, technique, std::string("earth"), kViews[0],
+                                 1280, 720)
+        ->UseManualTime()
+        ->Unit(benchmark::kMillisecond)
+        ->Iterations(1);
   }
 }
 

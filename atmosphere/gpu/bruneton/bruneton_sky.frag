@@ -3,16 +3,18 @@
 // altitude (a camera in space looks from where its ray enters the top).
 // One program per PASS (bruneton_technique.cpp), each restricted by the
 // stencil to the pixels it serves, since a SIMD rasteriser runs every side
-// of a branch: kClassifyPass marks, with u_class 1, the pixels whose ray
-// meets a surface or the ground, and with u_class 2 those whose ray misses
-// the atmosphere, giving them the sun's disk; kSkyPass draws the sky
-// through the atmosphere, kAerialPass the surfaces and the ground.
+// of a branch: kClassifyPass marks, by u_class, the pixels whose ray meets
+// a surface or the ground (1), those of them next to the horizon (2), and
+// those whose ray misses the atmosphere (3), giving the last the sun's
+// disk; kSkyPass draws the sky through the atmosphere, kAerialPass the
+// surfaces and the ground, kHorizonPass those next to the horizon.
 #include "atmosphere/gpu/bruneton/bruneton_common.glsl"
 #include "atmosphere/gpu/sky_pixel.glsl"
 
 #define kClassifyPass 0
 #define kSkyPass 1
 #define kAerialPass 2
+#define kHorizonPass 3
 #if PASS != kClassifyPass
 layout(early_fragment_tests) in;
 #endif
@@ -104,30 +106,50 @@ vec3 in_scattering(Atmosphere atmosphere, float r, float mu, float mu_s, float n
   return with_phases(atmosphere, rayleigh, mie, nu);
 }
 
+// The view from the camera to a point: where it enters the atmosphere (r),
+// its zenith cosine, the sun's, the cosine between them, the distance, and
+// the zenith cosine of the ground's horizon from there.
+struct ViewToPoint {
+  bool in_atmosphere;
+  float r, mu, mu_s, nu, d, mu_h;
+};
+
+ViewToPoint view_to_point(Atmosphere atmosphere, vec3 camera, vec3 point) {
+  ViewToPoint v;
+  vec3 dir = normalize(point - camera);
+  v.in_atmosphere = enter(atmosphere, camera, dir);
+  v.r = clamp(length(camera), atmosphere.bottom_radius, atmosphere.top_radius);
+  v.mu = clamp_cosine(dot(camera, dir) / v.r);
+  v.mu_s = clamp_cosine(dot(camera, u_sun_dir) / v.r);
+  v.nu = dot(dir, u_sun_dir);
+  v.d = length(point - camera);
+  v.mu_h = -safe_sqrt(1.0 - (atmosphere.bottom_radius / v.r) * (atmosphere.bottom_radius / v.r));
+  return v;
+}
+
 // The aerial perspective to a point. Near the horizon the two lookups fall
 // on either side of the table's seam between rays that meet the ground and
 // rays that do not, and their difference is not the air in between: a
 // bright or dark line along the horizon (Bruneton's repository, issue 29).
-// Within HORIZON_BLEND of the horizon's cosine the result is the blend of
-// the two evaluated just outside it, each consistent with itself.
-vec3 sky_radiance_to_point(Atmosphere atmosphere, vec3 camera, vec3 point,
-                           out vec3 transmittance) {
-  vec3 dir = normalize(point - camera);
+// Within HORIZON_BLEND of the horizon's cosine (kHorizonPass's pixels) the
+// result is the blend of the two evaluated just outside it, each
+// consistent with itself.
+bool near_horizon(ViewToPoint v) { return v.in_atmosphere && abs(v.mu - v.mu_h) < HORIZON_BLEND; }
+
+vec3 sky_radiance_to_point(Atmosphere atmosphere, ViewToPoint v, out vec3 transmittance) {
   transmittance = vec3(1.0);
-  if (!enter(atmosphere, camera, dir)) return vec3(0.0);
-  float r = clamp(length(camera), atmosphere.bottom_radius, atmosphere.top_radius);
-  float mu = clamp_cosine(dot(camera, dir) / r);
-  float mu_s = clamp_cosine(dot(camera, u_sun_dir) / r);
-  float nu = dot(dir, u_sun_dir);
-  float d = length(point - camera);
-  float mu_h = -safe_sqrt(1.0 - (atmosphere.bottom_radius / r) * (atmosphere.bottom_radius / r));
-  if (abs(mu - mu_h) >= HORIZON_BLEND) return in_scattering(atmosphere, r, mu, mu_s, nu, d, transmittance);
+  if (!v.in_atmosphere) return vec3(0.0);
+  float r = v.r, mu = v.mu, mu_s = v.mu_s, nu = v.nu, d = v.d, mu_h = v.mu_h;
+#if PASS != kHorizonPass
+  return in_scattering(atmosphere, r, mu, mu_s, nu, d, transmittance);
+#else
   vec3 t_below, t_above;
   vec3 below = in_scattering(atmosphere, r, mu_h - HORIZON_BLEND, mu_s, nu, d, t_below);
   vec3 above = in_scattering(atmosphere, r, mu_h + HORIZON_BLEND, mu_s, nu, d, t_above);
   float w = (mu - (mu_h - HORIZON_BLEND)) / (2.0 * HORIZON_BLEND);
   transmittance = mix(t_below, t_above, w);
   return mix(below, above, w);
+#endif
 }
 
 // Bruneton 2017, GetSunAndSkyIrradiance on level ground at p: the sun's
@@ -151,22 +173,26 @@ void main() {
   bool hits_ground = ray_sphere(camera, dir, atmosphere.bottom_radius, t_ground_near, t_ground_far) &&
                      t_ground_near > 0.0;
   vec3 radiance, transmittance;
+  float t_surface = pixel.t_surface;
+  // The air in front of a surface ends at the bottom sphere (see
+  // hillaire_sky.frag); where no surface was drawn, the sphere is the
+  // ground, lit by the sun and the sky.
+  float t = depth > 0.0 ? (hits_ground ? min(t_surface, t_ground_near) : t_surface) : t_ground_near;
 #if PASS == kClassifyPass
   float t_top_near, t_top_far;
   bool in_atmosphere = ray_sphere(camera, dir, atmosphere.top_radius, t_top_near, t_top_far) &&
                        t_top_far > 0.0;
   bool meets_ground = depth > 0.0 || hits_ground;
-  if (u_class == 1 ? !meets_ground : meets_ground || in_atmosphere) discard;
+  bool keep = u_class == 1   ? meets_ground
+              : u_class == 2 ? meets_ground && near_horizon(view_to_point(atmosphere, camera, camera + t * dir))
+                             : !meets_ground && !in_atmosphere;
+  if (!keep) discard;
   radiance = sun_disk_radiance(atmosphere, dot(dir, u_sun_dir));
-#elif PASS == kAerialPass
-  // The air in front of a surface ends at the bottom sphere (see
-  // hillaire_sky.frag); where no surface was drawn, the sphere is the
-  // ground, lit by the sun and the sky.
-  float t_surface = pixel.t_surface;
+#elif PASS == kAerialPass || PASS == kHorizonPass
   vec3 surface = pixel.surface;
-  float t = depth > 0.0 ? (hits_ground ? min(t_surface, t_ground_near) : t_surface) : t_ground_near;
   if (depth == 0.0) surface = ground_radiance_at(atmosphere, camera + t_ground_near * dir);
-  vec3 in_scatter = sky_radiance_to_point(atmosphere, camera, camera + t * dir, transmittance);
+  vec3 in_scatter =
+      sky_radiance_to_point(atmosphere, view_to_point(atmosphere, camera, camera + t * dir), transmittance);
   radiance = in_scatter + transmittance * surface;
 #else
   radiance = sky_radiance(atmosphere, camera, dir, transmittance);

@@ -97,6 +97,7 @@ BrunetonTechnique::BrunetonTechnique(Settings settings)
   classify_program_ = pass("kClassifyPass");
   sky_program_ = pass("kSkyPass");
   aerial_program_ = pass("kAerialPass");
+  horizon_program_ = pass("kHorizonPass");
   ground_irradiance_ = make_texture_2d(GL_RGBA32F, kGroundIrradianceWidth, 1);
 }
 
@@ -372,7 +373,8 @@ void BrunetonTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   glBindTextureUnit(3, scattering_.id());
   glBindTextureUnit(4, single_mie_.id());
   glBindTextureUnit(5, irradiance_.id());
-  for (const Program* p : {&classify_program_, &sky_program_, &aerial_program_}) {
+  for (const Program* p :
+       {&classify_program_, &sky_program_, &aerial_program_, &horizon_program_}) {
     p->use();
     glUniform1f(p->uniform("u_mu_s_min"), float(mu_s_min_));
     glUniform3fv(p->uniform("u_camera"), 1, glm::value_ptr(glm::vec3(frame.camera_atmo)));
@@ -382,13 +384,14 @@ void BrunetonTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
     glUniform1f(p->uniform("u_near"), frame.near);
   }
   // The stencil's classes (see bruneton_sky.frag): 0 the sky through the
-  // atmosphere, 1 a surface or the ground, 2 space and the sun alone.
-  constexpr GLint kSky = 0, kGround = 1, kSpace = 2;
+  // atmosphere, 1 a surface or the ground, 2 those next to the horizon, 3
+  // space and the sun alone.
+  constexpr GLint kSky = 0, kGround = 1, kHorizon = 2, kSpace = 3;
   timer.begin("sky");
   sky_pass_.begin(frame.target_framebuffer, frame.width, frame.height, classify_program_);
   glEnable(GL_STENCIL_TEST);
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-  for (GLint pixel_class : {kGround, kSpace}) {
+  for (GLint pixel_class : {kGround, kHorizon, kSpace}) {
     glStencilFunc(GL_ALWAYS, pixel_class, 0xff);
     glUniform1i(classify_program_.uniform("u_class"), pixel_class);
     sky_pass_.draw();
@@ -401,6 +404,9 @@ void BrunetonTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   timer.begin("aerial");
   glStencilFunc(GL_EQUAL, kGround, 0xff);
   aerial_program_.use();
+  sky_pass_.draw();
+  glStencilFunc(GL_EQUAL, kHorizon, 0xff);
+  horizon_program_.use();
   sky_pass_.draw();
   glDisable(GL_STENCIL_TEST);
   timer.end();

@@ -76,7 +76,7 @@ class BrunetonTechnique final : public AtmosphereTechnique {
   double mu_s_min_ = -0.2;
   Buffer block_;
   Texture transmittance_, irradiance_, scattering_, single_mie_, ground_irradiance_;
-  Program classify_program_, sky_program_, aerial_program_;
+  Program classify_program_, sky_program_, aerial_program_, horizon_program_;
   FullscreenPass sky_pass_;
   bool from_cache_ = false;
   std::vector<double> precompute_seconds_;
