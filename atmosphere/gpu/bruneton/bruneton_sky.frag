@@ -3,7 +3,7 @@
 // altitude (a camera in space looks from where its ray enters the top).
 // One program per PASS (bruneton_technique.cpp), each restricted by the
 // stencil to the pixels it serves, since a SIMD rasteriser runs every side
-// of a branch: kClassifyPass marks, by u_class, the pixels whose ray meets
+// of a branch: kClassifyPass marks, by CLASS, the pixels whose ray meets
 // a surface or the ground (1), those of them next to the horizon (2), and
 // those whose ray misses the atmosphere (3), giving the last the sun's
 // disk; kSkyPass draws the sky through the atmosphere, kAerialPass the
@@ -33,7 +33,6 @@ uniform vec3 u_camera;  // atmosphere space, metres
 uniform mat3 u_ray_from_ndc;
 uniform vec3 u_sun_dir;
 uniform float u_near;
-uniform int u_class;  // kClassifyPass's
 
 // The scattering table and single Mie at (r, mu, mu_s, nu); with COMBINED,
 // Mie's red only, the rest rebuilt from the ratio of the coefficients
@@ -183,9 +182,13 @@ void main() {
   bool in_atmosphere = ray_sphere(camera, dir, atmosphere.top_radius, t_top_near, t_top_far) &&
                        t_top_far > 0.0;
   bool meets_ground = depth > 0.0 || hits_ground;
-  bool keep = u_class == 1   ? meets_ground
-              : u_class == 2 ? meets_ground && near_horizon(view_to_point(atmosphere, camera, camera + t * dir))
-                             : !meets_ground && !in_atmosphere;
+#if CLASS == 1
+  bool keep = meets_ground;
+#elif CLASS == 2
+  bool keep = meets_ground && near_horizon(view_to_point(atmosphere, camera, camera + t * dir));
+#else
+  bool keep = !meets_ground && !in_atmosphere;
+#endif
   if (!keep) discard;
   radiance = sun_disk_radiance(atmosphere, dot(dir, u_sun_dir));
 #elif PASS == kAerialPass || PASS == kHorizonPass

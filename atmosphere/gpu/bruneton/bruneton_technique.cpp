@@ -89,12 +89,14 @@ BrunetonTechnique::BrunetonTechnique(Settings settings)
                     "than the {:.0f} MiB this program gives them",
                     width, s.mu, s.r, bytes / 1048576.0, kMaxTableBytes / 1048576.0));
   }
-  auto pass = [&](const char* which) {
-    return Program::graphics("gl/shaders/fullscreen.vert",
-                             "atmosphere/gpu/bruneton/bruneton_sky.frag",
-                             defines({fmt::format("PASS {}", which)}));
+  // Each pass and each class is a program of its own: a uniform choosing
+  // among them would make llvmpipe run all of them.
+  auto pass = [&](const char* which, int pixel_class = 0) {
+    return Program::graphics(
+        "gl/shaders/fullscreen.vert", "atmosphere/gpu/bruneton/bruneton_sky.frag",
+        defines({fmt::format("PASS {}", which), fmt::format("CLASS {}", pixel_class)}));
   };
-  classify_program_ = pass("kClassifyPass");
+  for (int c = 1; c <= 3; ++c) classify_programs_[size_t(c - 1)] = pass("kClassifyPass", c);
   sky_program_ = pass("kSkyPass");
   aerial_program_ = pass("kAerialPass");
   horizon_program_ = pass("kHorizonPass");
@@ -374,7 +376,8 @@ void BrunetonTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   glBindTextureUnit(4, single_mie_.id());
   glBindTextureUnit(5, irradiance_.id());
   for (const Program* p :
-       {&classify_program_, &sky_program_, &aerial_program_, &horizon_program_}) {
+       {&classify_programs_[0], &classify_programs_[1], &classify_programs_[2], &sky_program_,
+        &aerial_program_, &horizon_program_}) {
     p->use();
     glUniform1f(p->uniform("u_mu_s_min"), float(mu_s_min_));
     glUniform3fv(p->uniform("u_camera"), 1, glm::value_ptr(glm::vec3(frame.camera_atmo)));
@@ -388,12 +391,12 @@ void BrunetonTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   // space and the sun alone.
   constexpr GLint kSky = 0, kGround = 1, kHorizon = 2, kSpace = 3;
   timer.begin("sky");
-  sky_pass_.begin(frame.target_framebuffer, frame.width, frame.height, classify_program_);
+  sky_pass_.begin(frame.target_framebuffer, frame.width, frame.height, classify_programs_[0]);
   glEnable(GL_STENCIL_TEST);
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   for (GLint pixel_class : {kGround, kHorizon, kSpace}) {
     glStencilFunc(GL_ALWAYS, pixel_class, 0xff);
-    glUniform1i(classify_program_.uniform("u_class"), pixel_class);
+    classify_programs_[size_t(pixel_class - 1)].use();
     sky_pass_.draw();
   }
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);

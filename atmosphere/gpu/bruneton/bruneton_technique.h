@@ -12,6 +12,7 @@
 #include "gl/program.h"
 #include "gl/texture.h"
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -76,7 +77,9 @@ class BrunetonTechnique final : public AtmosphereTechnique {
   double mu_s_min_ = -0.2;
   Buffer block_;
   Texture transmittance_, irradiance_, scattering_, single_mie_, ground_irradiance_;
-  Program classify_program_, sky_program_, aerial_program_, horizon_program_;
+  // The stencil's classes 1 to 3, then the passes (bruneton_sky.frag).
+  std::array<Program, 3> classify_programs_;
+  Program sky_program_, aerial_program_, horizon_program_;
   FullscreenPass sky_pass_;
   bool from_cache_ = false;
   std::vector<double> precompute_seconds_;

@@ -6,6 +6,7 @@
 #include "gl/timer.h"
 
 #include <fmt/format.h>
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
@@ -29,6 +30,54 @@ constexpr double kDistanceTolerance = 0.05;
 // the bottom sphere) until served, those the grid served (marked by
 // incrementing), and the sky's.
 constexpr GLint kGridPixel = 0, kServedPixel = 1, kSkyPixel = 2;
+
+// The cells of a columns x rows grid of `cell` pixels that hold the sphere
+// of `radius` about the centre as the frame sees it: the whole grid from
+// inside the sphere or where its outline reaches behind the camera, none
+// where it is all behind. [first, last) in x and y.
+struct CellRange {
+  glm::ivec2 first{0}, last{0};
+};
+
+CellRange cells_of_sphere(const SkyFrame& frame, double radius, int cell, int columns, int rows) {
+  CellRange all{{0, 0}, {columns, rows}};
+  glm::dvec3 camera = frame.camera_atmo;
+  double distance = glm::length(camera);
+  if (distance <= radius * 1.001) return all;
+  // The outline: 64 directions on the cone of half-angle asin(radius / d)
+  // about the direction to the centre, widened so that the chords between
+  // them still hold the outline (1 / cos(pi / 64)).
+  glm::dvec3 to_centre = -camera / distance;
+  glm::dvec3 any = std::abs(to_centre.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0);
+  glm::dvec3 e1 = glm::normalize(glm::cross(any, to_centre)), e2 = glm::cross(to_centre, e1);
+  double half_angle = std::asin(radius / distance);
+  double tan_half = std::tan(half_angle) / std::cos(glm::pi<double>() / 64.0);
+  glm::dmat3 ndc_from_ray = glm::inverse(glm::dmat3(frame.atmo_ray_from_ndc));
+  glm::dvec2 low(1e30), high(-1e30);
+  int behind = 0;
+  for (int k = 0; k < 64; ++k) {
+    double a = 2.0 * glm::pi<double>() * k / 64.0;
+    glm::dvec3 dir = to_centre + tan_half * (std::cos(a) * e1 + std::sin(a) * e2);
+    glm::dvec3 q = ndc_from_ray * dir;
+    if (q.z <= 0.0) {
+      ++behind;
+      continue;
+    }
+    low = glm::min(low, glm::dvec2(q) / q.z);
+    high = glm::max(high, glm::dvec2(q) / q.z);
+  }
+  if (behind == 64) return {};
+  if (behind > 0) return all;
+  // NDC to cells, a cell wider on each side for the interpolation's edge.
+  auto to_cell = [&](double ndc, int pixels) { return (ndc * 0.5 + 0.5) * pixels / cell; };
+  glm::ivec2 first(int(std::floor(to_cell(low.x, frame.width))) - 1,
+                   int(std::floor(to_cell(low.y, frame.height))) - 1);
+  glm::ivec2 last(int(std::ceil(to_cell(high.x, frame.width))) + 1,
+                  int(std::ceil(to_cell(high.y, frame.height))) + 1);
+  first = glm::clamp(first, glm::ivec2(0), glm::ivec2(columns, rows));
+  last = glm::clamp(last, first, glm::ivec2(columns, rows));
+  return {first, last};
+}
 
 // Shades only the pixels of one class; keeps their class.
 void shade_only(GLint stencil_class) {
@@ -142,7 +191,6 @@ void OneilTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   const int columns = (frame.width + cell - 1) / cell, rows = (frame.height + cell - 1) / cell;
   if (columns != grid_width_ || rows != grid_height_) {
     std::vector<GLuint> grid = grid_indices(columns, rows);
-    grid_index_count_ = GLsizei(grid.size());
     grid_indices_ = make_buffer(grid.size() * sizeof(GLuint), grid.data(), 0);
     grid_vao_ = indexed_vao(grid_indices_);
     grid_width_ = columns;
@@ -218,8 +266,19 @@ void OneilTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   static_assert(kServedPixel == kGridPixel + 1);
   glStencilFunc(GL_EQUAL, kGridPixel, 0xff);
   glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
+  // Only the cells over the atmosphere: a surface beyond it, if any, is
+  // left to the pixels' own rays, which see no air there.
+  CellRange range = cells_of_sphere(frame, model_.top_radius, cell, columns, rows);
+  std::vector<GLsizei> counts;
+  std::vector<const void*> offsets;
+  for (int j = range.first.y; j < range.last.y; ++j) {
+    counts.push_back(GLsizei(6 * (range.last.x - range.first.x)));
+    offsets.push_back(
+        reinterpret_cast<const void*>(size_t(6 * (j * columns + range.first.x)) * sizeof(GLuint)));
+  }
   glBindVertexArray(grid_vao_.id());
-  glDrawElements(GL_TRIANGLES, grid_index_count_, GL_UNSIGNED_INT, nullptr);
+  glMultiDrawElements(GL_TRIANGLES, counts.data(), GL_UNSIGNED_INT, offsets.data(),
+                      GLsizei(counts.size()));
   timer.end();
   timer.begin("own_rays");
   set_frame_uniforms(pixel_program_, frame);

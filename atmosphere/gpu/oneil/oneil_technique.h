@@ -54,7 +54,6 @@ class OneilTechnique final : public AtmosphereTechnique {
   FullscreenPass fullscreen_;
   VertexArray dome_vao_, grid_vao_;
   Buffer dome_indices_, grid_indices_;
-  GLsizei grid_index_count_ = 0;
   int grid_width_ = 0, grid_height_ = 0;
 };
 
