@@ -3,9 +3,11 @@
 #include "atmosphere/gpu/registry.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/hash.h"
 #include "core/image_io.h"
 #include "core/interrupt.h"
 #include "core/progress.h"
+#include "core/version.h"
 #include "render/frame.h"
 #include "terrain/ground.h"
 
@@ -16,6 +18,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <fstream>
+#include <sstream>
 
 namespace planet {
 
@@ -154,6 +158,13 @@ void check_frames(const FlightScript& script, const CaptureOptions& options) {
   }
 }
 
+std::string flight_script_hash(const FlightScript& script) {
+  std::ifstream in(script.file, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return fmt::format("{:016x}", fnv1a(text.str()));
+}
+
 void check_keyframes_above_ground(const FlightScript& script) {
   if (script.allow_below_ground) return;
   TerrainSurface surface(script.body.shape, parse_terrain(script.body));
@@ -239,7 +250,10 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
       {"image", {{"width", script.width}, {"height", script.height}}},
       {"technique", script.technique},
       {"wall_seconds", result.wall_seconds},
+      {"flight_hash", flight_script_hash(script)},
+      {"planet", planet_version()},
   };
+  if (!options.share.whole()) summary["share"] = options.share.label();
   write_file_atomically(finished_marker, summary.dump(2) + "\n");
   return result;
 }
