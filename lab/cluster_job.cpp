@@ -151,11 +151,11 @@ std::string slurm_job_script(const ClusterJob& job) {
       R"SH(#!/bin/bash
 # planet {command} on {tasks} tasks of a Slurm job array, then one merge.
 # Submit with: sbatch THIS_FILE
-# Task K runs the command with --shard K/{tasks}; task 0 also queues the merge
-# job "{name}-merge", which starts once every task has ended well
-# (afterok) and puts the shares together into the output, byte for byte
-# the run made on one machine. Rerun a failed task with
-# `sbatch --array=K THIS_FILE`, then the merge by hand:
+# Task K runs the command with --shard K/{tasks}. Task 0 also queues the
+# merge job, {name}-merge: Slurm starts it once every
+# task has ended well (afterok), and it puts the shares together into the
+# output, byte for byte the run made on one machine. Rerun a failed task
+# with `sbatch --array=K THIS_FILE`, then the merge by hand:
 #   {program} {merge_line}
 #SBATCH --job-name={name}
 #SBATCH --array=0-{last}
