@@ -74,14 +74,22 @@ void run_merge(const ReferenceArgs& args) {
   std::filesystem::path png = std::filesystem::path(out).replace_extension(".png");
   write_exr(out, merged.render.image);
   write_tone_mapped_png(png, merged.render.image, merged.scene.exposure);
-  std::filesystem::path cached = cache_merged_reference(merged);
   folder.keep();
+  // The merge is done once its files are written; a cache that cannot
+  // take it (a node's read-only home) is worth a word, not a failed job.
+  std::string cached;
+  try {
+    cached = cache_merged_reference(merged).string();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "planet: the merged reference is not cached: %s\n", e.what());
+    cached = "not written";
+  }
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("%s: %dx%d, %s spp, %s, merged from %d shares in %.2f s\n", merged.scene.name.c_str(),
               merged.scene.width, merged.scene.height, merged.paths.label().c_str(),
               to_string(merged.mode), merged.shares, seconds);
   std::printf("wrote %s and %s (exposure %g); cache %s\n", out.string().c_str(),
-              png.string().c_str(), merged.scene.exposure, cached.string().c_str());
+              png.string().c_str(), merged.scene.exposure, cached.c_str());
 }
 
 void run_reference(const ReferenceArgs& args) {
