@@ -50,6 +50,8 @@ if [ "$what" = stop ]; then
 fi
 [ "$what" = start ] || { echo "usage: scripts/slurm-one-node.sh start|stop DIR" >&2; exit 2; }
 
+# The daemons live in sbin, which a non-login shell's PATH may lack.
+export PATH="$PATH:/usr/sbin:/sbin"
 for tool in munged slurmctld slurmd sbatch sinfo; do
   command -v "$tool" > /dev/null || cannot "no $tool (scripts/install-deps.sh installs slurm-wlm and munge)"
 done
