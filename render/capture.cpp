@@ -250,10 +250,14 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
       {"image", {{"width", script.width}, {"height", script.height}}},
       {"technique", script.technique},
       {"wall_seconds", result.wall_seconds},
-      {"flight_hash", flight_script_hash(script)},
-      {"planet", planet_version()},
   };
-  if (!options.share.whole()) summary["share"] = options.share.label();
+  // A share says what it is a share of, for the merge (capture_shares.h);
+  // the merged capture.json is again the one a run at once writes.
+  if (!options.share.whole()) {
+    summary["share"] = options.share.label();
+    summary["flight_hash"] = flight_script_hash(script);
+    summary["planet"] = planet_version();
+  }
   write_file_atomically(finished_marker, summary.dump(2) + "\n");
   return result;
 }

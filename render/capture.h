@@ -53,7 +53,8 @@ void check_frames(const FlightScript& script, const CaptureOptions& options);
 void check_keyframes_above_ground(const FlightScript& script);
 
 // What identifies the flight a capture renders: a hash of its script's
-// text, 16 hex digits. capture.json holds it, with the program's version.
+// text, 16 hex digits. A share's capture.json holds it, with the
+// program's version.
 std::string flight_script_hash(const FlightScript& script);
 
 // Needs a current GL context. Each frame's sidecar JSON is written after its

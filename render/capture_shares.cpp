@@ -224,9 +224,10 @@ MergedCapture merge_capture_shares(const std::vector<std::filesystem::path>& inp
   std::ifstream in(first.dir / "capture.json");
   nlohmann::json summary = nlohmann::json::parse(in);
   summary["frames"] = {{"first", 0}, {"end", total}, {"total_in_flight", total}};
+  // What a run at once writes: only the wall time (the shares' together)
+  // differs.
   summary["wall_seconds"] = merged.wall_seconds;
-  summary.erase("share");
-  summary["merged_from_shares"] = count;
+  for (const char* key : {"share", "flight_hash", "planet"}) summary.erase(key);
   write_file_atomically(marker, summary.dump(2) + "\n");
   return merged;
 }

@@ -33,8 +33,9 @@ struct MergedCapture {
 // folders) are shares 0 to N-1 of one capture, each once, finished (its
 // capture.json), of one flight script's text, size, rate, technique and
 // program version, with every frame's files; then copies their frames
-// into `out` and writes its capture.json last. Nothing is written where a
-// check fails: InputError naming the share and what is wrong.
+// into `out` and writes its capture.json last: a run at once's, but for
+// its wall time, the shares' together. Nothing is written where a check
+// fails: InputError naming the share and what is wrong.
 MergedCapture merge_capture_shares(const std::vector<std::filesystem::path>& inputs,
                                    const std::filesystem::path& out);
 
