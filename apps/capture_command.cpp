@@ -5,6 +5,7 @@
 #include "core/progress.h"
 #include "gl/context.h"
 #include "render/capture.h"
+#include "render/capture_shares.h"
 #include "sim/flight_script.h"
 
 #include <fmt/format.h>
@@ -13,13 +14,15 @@
 #include <cstdlib>
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace planet::apps {
 
 namespace {
 
 struct CaptureArgs {
-  std::string flight_file, out_dir, frames;
+  std::string flight_file, out_dir, frames, shard;
+  std::vector<std::string> merge;
   bool quiet = false;
   double pixel_budget = 1.0;
   double terrain_cache_mib = 256.0;
@@ -48,13 +51,41 @@ std::pair<int, int> parse_frame_range(const std::string& text) {
   return {parse(text.substr(0, colon), 0), parse(text.substr(colon + 1), -1)};
 }
 
+// The shares' frames put together into --out, every share checked first.
+void run_merge(const CaptureArgs& args) {
+  if (args.out_dir.empty()) throw InputError("capture --merge: --out is required");
+  if (!args.flight_file.empty() || !args.frames.empty() || !args.shard.empty()) {
+    throw InputError(
+        "capture --merge: the shares say what they are of; give only --merge "
+        "DIR... and --out");
+  }
+  std::vector<std::filesystem::path> inputs(args.merge.begin(), args.merge.end());
+  MergedCapture merged = merge_capture_shares(inputs, args.out_dir);
+  if (args.quiet) return;
+  std::printf("merged %d frames of %d shares (%.1f s of capture) into %s\n", merged.frames,
+              merged.shares, merged.wall_seconds, args.out_dir.c_str());
+}
+
 void run(const CaptureArgs& args) {
+  if (!args.merge.empty()) {
+    run_merge(args);
+    return;
+  }
+  if (args.flight_file.empty()) throw InputError("capture: --flight is required");
   FlightScript script = load_flight_script(args.flight_file);
   CaptureOptions options;
   options.out_dir = args.out_dir.empty() ? std::filesystem::path("out") / script.name
                                          : std::filesystem::path(args.out_dir);
   if (!args.frames.empty()) {
     std::tie(options.first_frame, options.end_frame) = parse_frame_range(args.frames);
+  }
+  if (!args.shard.empty()) {
+    if (!args.frames.empty()) {
+      throw InputError("capture: --shard picks its own frames; give --shard or --frames");
+    }
+    options.share = parse_share(args.shard, "--shard");
+    std::tie(options.first_frame, options.end_frame) = capture_share_frames(script, options.share);
+    options.out_dir = capture_share_dir(capture_shares_dir(options.out_dir), options.share);
   }
   options.progress = !args.quiet;
   set_progress_shown(!args.quiet);
@@ -93,9 +124,15 @@ void add_capture_command(CLI::App& app) {
   auto args = std::make_shared<CaptureArgs>();
   CLI::App* cmd =
       app.add_subcommand("capture", "Render a scripted flight headless into EXR + PNG frames");
-  cmd->add_option("--flight", args->flight_file, "Flight script (data/flights/*.json)")->required();
+  cmd->add_option("--flight", args->flight_file, "Flight script (data/flights/*.json); required");
   cmd->add_option("--out", args->out_dir, "Output folder (default out/<flight name>)");
   cmd->add_option("--frames", args->frames, "Slice of frames A:B to render (B exclusive)");
+  cmd->add_option("--shard", args->shard,
+                  "Render share K of N (from 0) of the frames, for a cluster, into "
+                  "<--out>.shares/share-K-of-N");
+  cmd->add_option("--merge", args->merge,
+                  "Put the shares in these folders together into the capture folder --out")
+      ->expected(1, -1);
   cmd->add_flag("--quiet", args->quiet, "Print nothing but errors");
   cmd->add_option("--pixel-budget", args->pixel_budget,
                   "Terrain detail: largest projected geometric error in pixels")

@@ -57,6 +57,7 @@ int main(int argc, char** argv) {
   planet::apps::add_bench_command(app);
   planet::apps::add_accuracy_command(app);
   planet::apps::add_reference_command(app);
+  planet::apps::add_cluster_command(app);
   CLI::App& probe = planet::apps::add_probe_command(app);
   planet::apps::add_probe_atmosphere_commands(probe);
   planet::apps::add_fly_command(app);

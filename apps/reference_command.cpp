@@ -8,13 +8,17 @@
 #include "core/tone_map.h"
 #include "lab/accuracy.h"
 #include "lab/reference_cache.h"
+#include "lab/reference_merge.h"
+#include "lab/reference_share.h"
 
 #include <fmt/format.h>
 
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <string>
+#include <vector>
 
 namespace planet::apps {
 
@@ -23,12 +27,83 @@ namespace {
 struct ReferenceArgs {
   std::string scene, out, mode = "rgb";
   std::string paths = "256";
+  std::string shard;
+  std::vector<std::string> merge;
   int width = 0, height = 0;
   bool list = false, quiet = false;
 };
 
+// Share K of N of the render, into the shares folder beside --out.
+void run_share(const ReferenceArgs& args, const Scene& scene, const PathBudget& budget,
+               ReferenceMode mode, const Share& share) {
+  std::filesystem::path out(args.out);
+  OutputFolder folder(reference_shares_dir(out), "--out");
+  double pixels = double(scene.width) * scene.height;
+  double share_paths = budget.spp * std::ceil(pixels / share.count);
+  Progress progress(fmt::format("reference {} share {}", scene.name, share.label()), share_paths,
+                    "path", args.quiet);
+  InterruptScope interrupt;
+  auto start = std::chrono::steady_clock::now();
+  ReferenceShareRender render;
+  try {
+    render = render_reference_share(
+        scene, budget, mode, share, out, [&](double done) { progress.update(done * share_paths); },
+        &InterruptScope::flag());
+  } catch (const ReferenceInterrupted& e) {
+    progress.finish();
+    folder.keep();
+    std::fprintf(stderr, "planet: %s\n", e.what());
+    std::exit(kInterruptedExitStatus);
+  }
+  progress.finish();
+  folder.keep();
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("%s: share %s, %dx%d, %s spp, %s: %.0f paths in %.1f s into %s\n", scene.name.c_str(),
+              share.label().c_str(), scene.width, scene.height, budget.label().c_str(),
+              to_string(mode), double(render.paths), seconds, render.file.string().c_str());
+}
+
+// The shares put together into --out, checked whole before anything is
+// written.
+void run_merge(const ReferenceArgs& args) {
+  std::vector<std::filesystem::path> inputs(args.merge.begin(), args.merge.end());
+  std::filesystem::path out(args.out);
+  OutputFolder folder(out.has_parent_path() ? out.parent_path() : ".", "--out");
+  auto start = std::chrono::steady_clock::now();
+  MergedReference merged = merge_reference_shares(inputs);
+  std::filesystem::path png = std::filesystem::path(out).replace_extension(".png");
+  write_exr(out, merged.render.image);
+  write_tone_mapped_png(png, merged.render.image, merged.scene.exposure);
+  folder.keep();
+  // The merge is done once its files are written; a cache that cannot
+  // take it (a node's read-only home) is worth a word, not a failed job.
+  std::string cached;
+  try {
+    cached = cache_merged_reference(merged).string();
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "planet: the merged reference is not cached: %s\n", e.what());
+    cached = "not written";
+  }
+  double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("%s: %dx%d, %s spp, %s, merged from %d shares in %.2f s\n", merged.scene.name.c_str(),
+              merged.scene.width, merged.scene.height, merged.paths.label().c_str(),
+              to_string(merged.mode), merged.shares, seconds);
+  std::printf("wrote %s and %s (exposure %g); cache %s\n", out.string().c_str(),
+              png.string().c_str(), merged.scene.exposure, cached.c_str());
+}
+
 void run_reference(const ReferenceArgs& args) {
   set_progress_shown(!args.quiet);
+  if (!args.merge.empty()) {
+    if (args.out.empty()) throw InputError("reference --merge: --out is required");
+    if (!args.scene.empty() || !args.shard.empty()) {
+      throw InputError(
+          "reference --merge: the shares say their scene and budget; give only "
+          "--merge DIR... and --out");
+    }
+    run_merge(args);
+    return;
+  }
   if (args.list) {
     for (const Scene& s : canonical_scenes()) {
       std::printf("%-20s %-9s %s\n", s.name.c_str(), s.body.c_str(), s.description.c_str());
@@ -47,6 +122,10 @@ void run_reference(const ReferenceArgs& args) {
   Body body = scene_body(scene);
   AtmosphereModel model = scene_atmosphere(scene, body);
   budget.lane_paths(make_medium(model, mode).channels.size());
+  if (!args.shard.empty()) {
+    run_share(args, scene, budget, mode, parse_share(args.shard, "--shard"));
+    return;
+  }
   std::filesystem::path out(args.out);
   OutputFolder folder(out.has_parent_path() ? out.parent_path() : ".", "--out");
   std::filesystem::path cached = reference_cache_file(scene, model, budget, mode);
@@ -123,6 +202,13 @@ void add_reference_command(CLI::App& app) {
       ->check(CLI::Range(1, 8192));
   cmd->add_option("--height", args->height, "Image height (default: the scene's, 64)")
       ->check(CLI::Range(1, 8192));
+  cmd->add_option("--shard", args->shard,
+                  "Render share K of N (from 0) of the pixels, for a cluster: its sums go to "
+                  "<--out's stem>.shares/share-K-of-N.sums");
+  cmd->add_option("--merge", args->merge,
+                  "Put the shares in these folders (or files) together into --out, byte for "
+                  "byte the render made at once")
+      ->expected(1, -1);
   cmd->add_flag("--list", args->list, "List the canonical scenes");
   cmd->add_flag("--quiet", args->quiet, "No progress line");
   cmd->callback([args] { run_reference(*args); });

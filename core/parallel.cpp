@@ -1,5 +1,7 @@
 #include "core/parallel.h"
 
+#include <sched.h>
+
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -11,7 +13,16 @@
 namespace planet {
 
 int thread_count(int requested) {
-  return requested > 0 ? requested : std::max(1, int(std::thread::hardware_concurrency()));
+  if (requested > 0) return requested;
+  // The cores this process may run on, not the machine's: a scheduler
+  // (Slurm's task/affinity, a container's cpuset) binds a task to a few of
+  // a large node's cores, and a thread per core of the node would crowd them.
+  cpu_set_t cores;
+  CPU_ZERO(&cores);
+  if (sched_getaffinity(0, sizeof cores, &cores) == 0 && CPU_COUNT(&cores) > 0) {
+    return CPU_COUNT(&cores);
+  }
+  return std::max(1, int(std::thread::hardware_concurrency()));
 }
 
 void parallel_for(int count, int threads, const std::function<void(int)>& work,

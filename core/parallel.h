@@ -7,7 +7,8 @@
 
 namespace planet {
 
-// Threads to use: `requested`, or all cores when it is 0 or below.
+// Threads to use: `requested`, or, when it is 0 or below, every core this
+// process may run on (its CPU affinity).
 int thread_count(int requested);
 
 // Calls work(i) for every i in [0, count) on thread_count(threads) threads

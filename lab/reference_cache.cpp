@@ -54,8 +54,8 @@ class Hasher : public Fnv1a {
 
 namespace {
 
-// Everything but the tracer's version and the paths.
-void hash_view(Hasher& h, const Scene& scene, const AtmosphereModel& m, ReferenceMode mode) {
+// The medium the paths cross: the mode and the model as loaded.
+void hash_model(Hasher& h, const AtmosphereModel& m, ReferenceMode mode) {
   h.text(to_string(mode));
   h.number(m.bottom_radius), h.number(m.top_radius), h.vec(m.wavelengths_nm),
       h.vec(m.solar_irradiance), h.number(m.sun_angular_radius), h.number(m.mie_g),
@@ -70,6 +70,11 @@ void hash_view(Hasher& h, const Scene& scene, const AtmosphereModel& m, Referenc
       h.list(*v);
     }
   }
+}
+
+// Everything but the tracer's version and the paths.
+void hash_view(Hasher& h, const Scene& scene, const AtmosphereModel& m, ReferenceMode mode) {
+  hash_model(h, m, mode);
   h.text(scene.name), h.text(scene.body);
   h.vec(scene.camera.pos_body), h.vec(scene.sun_dir_body);
   h.number(scene.camera.body_from_camera.w), h.number(scene.camera.body_from_camera.x),
@@ -99,6 +104,12 @@ std::string reference_view_key(const Scene& scene, const AtmosphereModel& m, Ref
   h.number(kReferenceVersion);
   h.text("any paths");
   hash_view(h, scene, m, mode);
+  return fmt::format("{:016x}", h.value());
+}
+
+std::string reference_model_key(const AtmosphereModel& m, ReferenceMode mode) {
+  Hasher h;
+  hash_model(h, m, mode);
   return fmt::format("{:016x}", h.value());
 }
 

@@ -43,6 +43,8 @@ std::string reference_key(const Scene& scene, const AtmosphereModel& model, cons
 // renders of one view, whatever their paths.
 std::string reference_view_key(const Scene& scene, const AtmosphereModel& model,
                                ReferenceMode mode);
+// 16 hex digits identifying the model as loaded and the mode alone.
+std::string reference_model_key(const AtmosphereModel& model, ReferenceMode mode);
 std::filesystem::path reference_cache_file(const Scene& scene, const AtmosphereModel& model,
                                            const PathBudget& paths, ReferenceMode mode);
 

@@ -3,9 +3,11 @@
 #include "atmosphere/gpu/registry.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/hash.h"
 #include "core/image_io.h"
 #include "core/interrupt.h"
 #include "core/progress.h"
+#include "core/version.h"
 #include "render/frame.h"
 #include "terrain/ground.h"
 
@@ -16,6 +18,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <fstream>
+#include <sstream>
 
 namespace planet {
 
@@ -154,6 +158,13 @@ void check_frames(const FlightScript& script, const CaptureOptions& options) {
   }
 }
 
+std::string flight_script_hash(const FlightScript& script) {
+  std::ifstream in(script.file, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  return fmt::format("{:016x}", fnv1a(text.str()));
+}
+
 void check_keyframes_above_ground(const FlightScript& script) {
   if (script.allow_below_ground) return;
   TerrainSurface surface(script.body.shape, parse_terrain(script.body));
@@ -240,6 +251,13 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
       {"technique", script.technique},
       {"wall_seconds", result.wall_seconds},
   };
+  // A share says what it is a share of, for the merge (capture_shares.h);
+  // the merged capture.json is again the one a run at once writes.
+  if (!options.share.whole()) {
+    summary["share"] = options.share.label();
+    summary["flight_hash"] = flight_script_hash(script);
+    summary["planet"] = planet_version();
+  }
   write_file_atomically(finished_marker, summary.dump(2) + "\n");
   return result;
 }

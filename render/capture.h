@@ -5,6 +5,7 @@
 // machine. capture.json, written last, marks a finished capture; it is
 // removed first, so a capture that stops half-way never looks finished.
 #include "atmosphere/gpu/registry.h"
+#include "core/share.h"
 #include "sim/flight_script.h"
 
 #include <filesystem>
@@ -20,6 +21,9 @@ struct CaptureOptions {
   bool progress = true;
   double pixel_budget = 1.0;  // terrain: largest projected geometric error, pixels
   size_t terrain_cache_bytes = size_t(256) << 20;
+  // Which share of a capture split over a cluster this run is
+  // (capture_shares.h); capture.json records it for the merge.
+  Share share;
 };
 
 struct CaptureResult {
@@ -47,6 +51,11 @@ void check_frames(const FlightScript& script, const CaptureOptions& options);
 // script allows otherwise: InputError naming the keyframe, its height and
 // the ground's. No GL needed.
 void check_keyframes_above_ground(const FlightScript& script);
+
+// What identifies the flight a capture renders: a hash of its script's
+// text, 16 hex digits. A share's capture.json holds it, with the
+// program's version.
+std::string flight_script_hash(const FlightScript& script);
 
 // Needs a current GL context. Each frame's sidecar JSON is written after its
 // images, so a frame with a sidecar is complete.

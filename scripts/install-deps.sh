@@ -21,6 +21,8 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev
   # the interactive program's test runs a real window under a virtual display
   xvfb xauth xdotool
+  # the cluster test runs a one-node Slurm (scripts/slurm-one-node.sh)
+  slurm-wlm munge
 )
 
 missing=()

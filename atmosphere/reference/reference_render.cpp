@@ -91,6 +91,7 @@ ReferenceImage render_reference(const Medium& m, const ReferenceView& view,
     auto trace_row = [&](int y) {
       for (int x = 0; x < view.width; ++x) {
         uint64_t pixel = uint64_t(y) * uint64_t(view.width) + uint64_t(x);
+        if (!share_owns_pixel(settings.share, pixel)) continue;
         glm::dvec3 dir = view.ray_dir(x, y);
         // Lane by lane, which keeps one channel's table in the cache.
         // One lane per (replicate, channel): its own stratified sequence.
@@ -129,11 +130,30 @@ ReferenceImage render_reference(const Medium& m, const ReferenceView& view,
   }
   if (settings.progress) settings.progress(1.0);
 
+  resolve_sums(m, sums, image);
+  size_t traced_pixels = 0;
+  for (size_t pixel = 0; pixel < pixels; ++pixel) {
+    traced_pixels += share_owns_pixel(settings.share, pixel) ? 1 : 0;
+  }
+  image.paths = traced_pixels * (total_paths - traced_before);
+  image.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  image.trace_seconds = trace_seconds;
+  return image;
+}
+
+void resolve_sums(const Medium& m, const RenderSums& sums, ReferenceImage& image) {
+  const size_t channels = m.channels.size();
+  const size_t lanes = kReplicates * channels;
+  const size_t pixels = size_t(sums.width) * size_t(sums.height);
+  image.width = sums.width;
+  image.height = sums.height;
+  image.rgb.assign(pixels * 3, 0.0f);
+  image.noise.assign(pixels * 3, 0.0f);
   for (size_t pixel = 0; pixel < pixels; ++pixel) {
     std::array<glm::dvec3, kReplicates> replicate{};
     for (size_t lane = 0; lane < lanes; ++lane) {
-      replicate[lane / channels] += sums.sum[pixel * lanes + lane] / lane_paths[lane] *
-                                    m.channels[lane % channels].rgb_weight;
+      replicate[lane / channels] +=
+          sums.sum[pixel * lanes + lane] / sums.done[lane] * m.channels[lane % channels].rgb_weight;
     }
     static_assert(kReplicates == 2, "the mean and spread below are of two replicates");
     glm::dvec3 mean = 0.5 * (replicate[0] + replicate[1]);
@@ -143,10 +163,6 @@ ReferenceImage render_reference(const Medium& m, const ReferenceView& view,
       image.noise[3 * pixel + size_t(c)] = float(spread[c]);
     }
   }
-  image.paths = pixels * (total_paths - traced_before);
-  image.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  image.trace_seconds = trace_seconds;
-  return image;
 }
 
 }  // namespace planet

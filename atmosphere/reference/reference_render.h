@@ -5,6 +5,7 @@
 #include "atmosphere/reference/path_budget.h"
 #include "atmosphere/reference/path_tracer.h"
 #include "atmosphere/reference/render_sums.h"
+#include "core/share.h"
 
 #include <atomic>
 #include <cstdint>
@@ -33,7 +34,16 @@ struct ReferenceSettings {
   // Set (by a SIGINT handler) to stop: the chunk in progress is undone and
   // RenderInterrupted thrown, the last checkpoint holding all that is kept.
   const std::atomic<bool>* cancel = nullptr;
+  // The pixels traced: those of this share (pixel index % N == K, which
+  // spreads the sky's cheap and the ground's dear rows evenly over the
+  // shares). The others keep their starting sums.
+  Share share;
 };
+
+// Whether a share of a render traces this pixel (index y * width + x).
+inline bool share_owns_pixel(const Share& share, uint64_t pixel) {
+  return pixel % uint64_t(share.count) == uint64_t(share.index);
+}
 
 // A render stopped by ReferenceSettings::cancel, with the share of its
 // paths that its last checkpoint holds.
@@ -55,5 +65,10 @@ struct ReferenceImage {
 
 ReferenceImage render_reference(const Medium& medium, const ReferenceView& view,
                                 const ReferenceSettings& settings);
+
+// The image and noise of finished sums (every lane at its budget's paths,
+// sums.done): what render_reference ends with, so that sums put together
+// from shares give the same bits as one render.
+void resolve_sums(const Medium& medium, const RenderSums& sums, ReferenceImage& image);
 
 }  // namespace planet

@@ -1,0 +1,38 @@
+#include "core/share.h"
+
+#include "core/error.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstdint>
+
+namespace planet {
+
+std::string Share::label() const { return fmt::format("{}/{}", index, count); }
+
+Share parse_share(const std::string& text, const std::string& what) {
+  auto digits = [](const std::string& s) {
+    return !s.empty() && s.size() <= 6 &&
+           std::all_of(s.begin(), s.end(), [](char c) { return c >= '0' && c <= '9'; });
+  };
+  size_t slash = text.find('/');
+  std::string k = slash == std::string::npos ? text : text.substr(0, slash);
+  std::string n = slash == std::string::npos ? "" : text.substr(slash + 1);
+  if (!digits(k) || !digits(n)) {
+    throw InputError(fmt::format("{} '{}': expected K/N, share K (from 0) of N", what, text));
+  }
+  Share share{std::stoi(k), std::stoi(n)};
+  if (share.count < 1 || share.count > 65536 || share.index >= share.count) {
+    throw InputError(fmt::format("{} '{}': K must be 0 to N-1 and N 1 to 65536", what, text));
+  }
+  return share;
+}
+
+std::pair<int, int> share_range(const Share& share, int total) {
+  // 64-bit products: total * N can pass 2^31 for long captures on many tasks.
+  auto edge = [&](int k) { return int(int64_t(total) * k / share.count); };
+  return {edge(share.index), edge(share.index + 1)};
+}
+
+}  // namespace planet

@@ -1,0 +1,29 @@
+#pragma once
+// One share of a deterministic job split over many machines: share K of N
+// ("--shard K/N", K from 0 as a scheduler's array index counts). Each share
+// does a fixed part of the work, known from K and N alone, so shares can
+// run in any order, anywhere, and again.
+#include <string>
+#include <utility>
+
+namespace planet {
+
+struct Share {
+  int index = 0;  // K, 0 <= K < N
+  int count = 1;  // N
+  bool whole() const { return count == 1; }
+  // "2/4"
+  std::string label() const;
+  bool operator==(const Share&) const = default;
+};
+
+// "K/N" with 0 <= K < N <= 65536; InputError naming `what` ("--shard")
+// and the text otherwise.
+Share parse_share(const std::string& text, const std::string& what);
+
+// The share's run of `total` items [first, end), contiguous and as even as
+// can be: shares 0..N-1 cover 0..total once, in order. Some are empty
+// where N > total.
+std::pair<int, int> share_range(const Share& share, int total);
+
+}  // namespace planet

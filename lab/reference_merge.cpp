@@ -1,0 +1,191 @@
+#include "lab/reference_merge.h"
+
+#include "core/error.h"
+#include "core/image_io.h"
+#include "core/version.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <map>
+#include <utility>
+
+namespace planet {
+
+namespace {
+
+// The share files an input names: the file itself, or a folder's
+// share-K-of-N.sums in name order.
+std::vector<std::filesystem::path> share_files(const std::filesystem::path& input) {
+  std::error_code ec;
+  if (std::filesystem::is_regular_file(input, ec)) return {input};
+  if (!std::filesystem::is_directory(input, ec)) {
+    throw InputError(fmt::format("--merge {}: no such file or folder", input.string()));
+  }
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::directory_iterator(input)) {
+    std::string name = entry.path().filename().string();
+    if (name.rfind("share-", 0) == 0 && entry.path().extension() == ".sums") {
+      files.push_back(entry.path());
+    }
+  }
+  if (files.empty()) {
+    throw InputError(
+        fmt::format("--merge {}: holds no shares (share-K-of-N.sums, written by "
+                    "planet reference --shard K/N)",
+                    input.string()));
+  }
+  std::sort(files.begin(), files.end());
+  return files;
+}
+
+// What the shares of one render must agree on, as (name, value): those a
+// merge takes from the shares themselves.
+std::vector<std::pair<std::string, std::string>> shared_fields(const ReferenceShareId& id) {
+  return {{"scene", id.scene},
+          {"size", fmt::format("{}x{}", id.width, id.height)},
+          {"mode", id.mode},
+          {"spp", id.paths},
+          {"share count", std::to_string(id.share.count)}};
+}
+
+// ... and those this program fixes: a share of another model or build
+// would not give the bits this program renders.
+std::vector<std::pair<std::string, std::string>> program_fields(const ReferenceShareId& id) {
+  return {{"tracer version", std::to_string(id.tracer)},
+          {"planet version", id.planet},
+          {"model", id.model},
+          {"view (camera, sun)", id.view}};
+}
+
+// The value most shares hold, for each shared field: the odd one out is
+// the share named, not the others.
+std::vector<std::string> majority(const std::vector<ReferenceShareFile>& shares) {
+  std::vector<std::string> out;
+  size_t fields = shared_fields(shares.front().id).size();
+  for (size_t f = 0; f < fields; ++f) {
+    std::map<std::string, int> votes;
+    std::string best;
+    for (const ReferenceShareFile& s : shares) {
+      std::string value = shared_fields(s.id)[f].second;
+      if (++votes[value] > votes[best] || best.empty()) best = value;
+    }
+    out.push_back(best);
+  }
+  return out;
+}
+
+}  // namespace
+
+MergedReference merge_reference_shares(const std::vector<std::filesystem::path>& inputs) {
+  if (inputs.empty()) throw InputError("--merge: name the folders (or files) of the shares");
+  std::vector<ReferenceShareFile> shares;
+  for (const std::filesystem::path& input : inputs) {
+    for (const std::filesystem::path& file : share_files(input)) {
+      shares.push_back(read_reference_share(file));
+    }
+  }
+  // One render: every share agrees with the most of them ...
+  std::vector<std::string> expected = majority(shares);
+  for (const ReferenceShareFile& s : shares) {
+    auto fields = shared_fields(s.id);
+    for (size_t f = 0; f < fields.size(); ++f) {
+      if (fields[f].second != expected[f]) {
+        throw InputError(fmt::format("{}: share {} is of {} {}, the other shares of {}",
+                                     s.file.string(), s.id.share.label(), fields[f].first,
+                                     fields[f].second, expected[f]));
+      }
+    }
+  }
+  // ... and is what this program renders for that scene.
+  MergedReference merged;
+  const ReferenceShareId& first = shares.front().id;
+  merged.scene = find_scene(first.scene);
+  merged.scene.width = first.width;
+  merged.scene.height = first.height;
+  merged.mode = parse_reference_mode(first.mode);
+  merged.paths = PathBudget::parse(first.paths);
+  ReferenceShareId ours = reference_share_id(merged.scene, merged.paths, merged.mode, Share{});
+  for (const ReferenceShareFile& s : shares) {
+    auto theirs = program_fields(s.id), mine = program_fields(ours);
+    for (size_t f = 0; f < theirs.size(); ++f) {
+      if (theirs[f].second != mine[f].second) {
+        throw InputError(fmt::format(
+            "{}: share {} is of {} {}, this program's for {} is {}: render the share again "
+            "with this program",
+            s.file.string(), s.id.share.label(), theirs[f].first, theirs[f].second, first.scene,
+            mine[f].second));
+      }
+    }
+  }
+  // Shares 0 to N-1, each once and finished.
+  const int count = first.share.count;
+  std::vector<const ReferenceShareFile*> by_index(size_t(count), nullptr);
+  for (const ReferenceShareFile& s : shares) {
+    const ReferenceShareFile*& slot = by_index[size_t(s.id.share.index)];
+    if (slot) {
+      throw InputError(fmt::format("share {} is given twice: {} and {}", s.id.share.label(),
+                                   slot->file.string(), s.file.string()));
+    }
+    slot = &s;
+  }
+  std::string missing;
+  int missing_count = 0;
+  for (int k = 0; k < count; ++k) {
+    if (by_index[size_t(k)]) continue;
+    missing += fmt::format("{}{}/{}", missing.empty() ? "" : ", ", k, count);
+    ++missing_count;
+  }
+  if (!missing.empty()) {
+    std::string where;
+    for (const std::filesystem::path& input : inputs) where += " " + input.string();
+    throw InputError(fmt::format("share{} {} of {} {} missing from{} ({} of {} found)",
+                                 missing_count > 1 ? "s" : "", missing, first.scene,
+                                 missing_count > 1 ? "are" : "is", where, count - missing_count,
+                                 count));
+  }
+  Medium medium =
+      make_medium(scene_atmosphere(merged.scene, scene_body(merged.scene)), merged.mode);
+  const std::vector<int> lane_paths = merged.paths.lane_paths(medium.channels.size());
+  for (const ReferenceShareFile* s : by_index) {
+    if (s->sums.done != lane_paths) {
+      double all = 0, done = 0;
+      for (size_t lane = 0; lane < lane_paths.size(); ++lane) {
+        all += lane_paths[lane];
+        done += lane < s->sums.done.size() ? s->sums.done[lane] : 0;
+      }
+      throw InputError(
+          fmt::format("{}: share {} is unfinished ({:.1f}% of its paths): run it "
+                      "again to finish it",
+                      s->file.string(), s->id.share.label(), 100.0 * done / all));
+    }
+  }
+  // Every pixel's sums from the share that traced it.
+  merged.shares = count;
+  merged.sums = by_index.front()->sums;
+  const size_t lanes = lane_paths.size();
+  const size_t pixels = size_t(first.width) * size_t(first.height);
+  for (size_t pixel = 0; pixel < pixels; ++pixel) {
+    const RenderSums& from = by_index[pixel % size_t(count)]->sums;
+    std::copy_n(&from.sum[pixel * lanes], lanes, &merged.sums.sum[pixel * lanes]);
+  }
+  ReferenceImage image;
+  resolve_sums(medium, merged.sums, image);
+  merged.render.image = to_image_rgb(image);
+  merged.render.noise = {image.width, image.height, image.noise};
+  return merged;
+}
+
+std::filesystem::path cache_merged_reference(const MergedReference& merged) {
+  AtmosphereModel model = scene_atmosphere(merged.scene, scene_body(merged.scene));
+  std::filesystem::path file = reference_cache_file(merged.scene, model, merged.paths, merged.mode);
+  std::filesystem::create_directories(file.parent_path());
+  write_sums(reference_sums_file(file), reference_view_key(merged.scene, model, merged.mode),
+             merged.sums);
+  // The noise first: a reference in the cache always has its noise.
+  write_exr(reference_noise_file(file), merged.render.noise);
+  write_exr(file, merged.render.image);
+  return file;
+}
+
+}  // namespace planet
