@@ -7,9 +7,9 @@
 // run. Each pass waits for the GL before and after it, so that its time is
 // its own, and its wall time is kept too (wall_ms, wall_over_raymarch; the
 // whole frame's in frame_wall_ms): on llvmpipe the timer queries leave out
-// the vertex shaders, which run in the calling thread. The tables a technique computes once per model (Bruneton's
-// precompute) are made before timing; their cost is the precompute's,
-// reported by the technique itself.
+// the vertex shaders, which run in the calling thread. The tables a technique computes once per
+// model (Bruneton's precompute) are made before timing; their cost is the precompute's, reported by
+// the technique itself.
 //
 //   planet bench --benchmark_filter=^Sky/
 //   planet bench --benchmark_filter='^Sky/.*/mars_'
@@ -67,6 +67,7 @@ struct Timed {
   double wall_ms = 0;                     // the same, wall time of the synchronous passes
   double frame_wall_ms = 0;               // every pass of the frame, wall time
   std::map<std::string, double> pass_ms;  // median per pass
+  std::map<std::string, double> pass_wall_ms;
 };
 
 // The raymarch baseline per body and view, measured when first asked.
@@ -80,13 +81,14 @@ Timed time_frames(FrameRenderer& renderer, const Camera& camera, const glm::dvec
   // model's tables; not timed.
   renderer.render(camera, sun, 10.0);
   std::vector<double> totals, walls, frame_walls;
-  std::map<std::string, std::vector<double>> passes;
+  std::map<std::string, std::vector<double>> passes, pass_walls;
   for (int i = 0; i < kTimedFrames; ++i) {
     double total = 0, wall = 0, frame_wall = 0;
     for (const PassTiming& p : renderer.render(camera, sun, 10.0).passes) {
       frame_wall += p.wall_ms;
       if (!is_atmosphere_pass(p.pass)) continue;
       passes[p.pass].push_back(p.gpu_ms);
+      pass_walls[p.pass].push_back(p.wall_ms);
       total += p.gpu_ms;
       wall += p.wall_ms;
     }
@@ -99,6 +101,7 @@ Timed time_frames(FrameRenderer& renderer, const Camera& camera, const glm::dvec
   timed.wall_ms = median(walls);
   timed.frame_wall_ms = median(frame_walls);
   for (auto& [pass, ms] : passes) timed.pass_ms[pass] = median(ms);
+  for (auto& [pass, ms] : pass_walls) timed.pass_wall_ms[pass] = median(ms);
   return timed;
 }
 
@@ -130,6 +133,7 @@ void BM_Sky(benchmark::State& state, std::string technique, std::string body_nam
     state.SetIterationTime(timed.total_ms * 1e-3);
   }
   for (const auto& [pass, ms] : timed.pass_ms) state.counters[pass + "_ms"] = ms;
+  for (const auto& [pass, ms] : timed.pass_wall_ms) state.counters[pass + "_wall_ms"] = ms;
   state.counters["raymarch_ms"] = raymarch.total_ms;
   state.counters["over_raymarch"] = timed.total_ms / std::max(raymarch.total_ms, 1e-9);
   state.counters["wall_ms"] = timed.wall_ms;

@@ -17,6 +17,12 @@ out vec3 v_transmittance;
 // plane it is linear across the screen, as the grid interpolates it.
 out float v_inverse_distance;
 out float v_sky;       // 1 for a vertex over open sky
+// The light leaving the bottom sphere where the vertex's ray meets it, and
+// 1 where it does (else 0 for both): for the pixels of the sphere where no
+// surface was drawn, interpolated where all three of a triangle's vertices
+// meet the sphere.
+out vec3 v_sphere_radiance;
+out float v_on_sphere;
 
 void main() {
   Atmosphere atmosphere = block_atmosphere();
@@ -35,6 +41,10 @@ void main() {
   v_sky = t_surface == kFar && !ground ? 1.0 : 0.0;
   float distance = t_surface == kFar ? t_ground : t_surface;
   v_inverse_distance = v_sky > 0.0 ? 0.0 : 1.0 / distance;
+  v_on_sphere = ground ? 1.0 : 0.0;
+  v_sphere_radiance = ground ? atmosphere.solar_irradiance *
+                                   ground_radiance(atmosphere, camera + t_ground * dir, u_sun_dir)
+                             : vec3(0.0);
   oneil_ray(atmosphere, camera, dir, t_surface, v_rayleigh, v_mie, v_transmittance);
   gl_Position = vec4(ndc, 0.0, 1.0);
 }

@@ -1,6 +1,6 @@
 // The grid's pixels that its interpolation could not serve (left unmarked
-// in the stencil by oneil_ground.frag), the bottom sphere's among them:
-// each sums the light along its own ray, as the grid's vertices do.
+// in the stencil by oneil_ground.frag): each sums the light along its own
+// ray, as the grid's vertices do.
 #include "atmosphere/gpu/oneil/oneil_common.glsl"
 
 layout(early_fragment_tests) in;

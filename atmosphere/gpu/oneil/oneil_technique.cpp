@@ -79,6 +79,46 @@ CellRange cells_of_sphere(const SkyFrame& frame, double radius, int cell, int co
   return {first, last};
 }
 
+// The runs [first, last) of the dome's `segments` sectors of azimuth about
+// `up` (from `east` toward `north`) that the frame can see, from the rays of
+// a 33 x 33 lattice over the screen, each sector within two of a seen one
+// kept (the lattice's rays are no further apart than that). All of them
+// where the view holds the vertical, about which every sector meets.
+std::vector<glm::ivec2> visible_sectors(const SkyFrame& frame, const glm::dvec3& up,
+                                        const glm::dvec3& east, const glm::dvec3& north,
+                                        int segments) {
+  glm::dmat3 ray_from_ndc(frame.atmo_ray_from_ndc);
+  glm::dmat3 ndc_from_ray = glm::inverse(ray_from_ndc);
+  for (glm::dvec3 axis : {up, -up}) {
+    glm::dvec3 q = ndc_from_ray * axis;
+    if (q.z > 0.0 && std::abs(q.x) <= 1.0 * q.z && std::abs(q.y) <= 1.0 * q.z) {
+      return {{0, segments}};
+    }
+  }
+  std::vector<bool> seen(size_t(segments), false);
+  constexpr int kLattice = 33;
+  for (int j = 0; j < kLattice; ++j) {
+    for (int i = 0; i < kLattice; ++i) {
+      glm::dvec3 ray = ray_from_ndc * glm::dvec3(2.0 * i / (kLattice - 1) - 1.0,
+                                                 2.0 * j / (kLattice - 1) - 1.0, 1.0);
+      double azimuth = std::atan2(glm::dot(ray, north), glm::dot(ray, east));
+      int sector = int(std::floor(azimuth / (2.0 * glm::pi<double>()) * segments));
+      for (int k = sector - 2; k <= sector + 2; ++k)
+        seen[size_t(((k % segments) + segments) % segments)] = true;
+    }
+  }
+  std::vector<glm::ivec2> runs;
+  for (int k = 0; k < segments; ++k) {
+    if (!seen[size_t(k)]) continue;
+    if (!runs.empty() && runs.back().y == k) {
+      runs.back().y = k + 1;
+    } else {
+      runs.push_back({k, k + 1});
+    }
+  }
+  return runs;
+}
+
 // Shades only the pixels of one class; keeps their class.
 void shade_only(GLint stencil_class) {
   glStencilFunc(GL_EQUAL, stencil_class, 0xff);
@@ -250,9 +290,22 @@ void OneilTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   glUniformMatrix3fv(dome_program_.uniform("u_ndc_from_ray"), 1, GL_FALSE,
                      glm::value_ptr(ndc_from_ray));
   shade_only(kSkyPixel);
+  // The index buffer's rows are the rings' (the first `rings` of them), and
+  // the cells of a row its sectors of azimuth: only those in view are drawn,
+  // a sixth of the dome's vertices and their sums from the ground.
+  const int segments = 2 * settings_.dome;
+  std::vector<GLsizei> dome_counts;
+  std::vector<const void*> dome_offsets;
+  for (glm::ivec2 run : visible_sectors(frame, up, east, north, segments)) {
+    for (int ring = 0; ring < rings; ++ring) {
+      dome_counts.push_back(GLsizei(6 * (run.y - run.x)));
+      dome_offsets.push_back(
+          reinterpret_cast<const void*>(size_t(6 * (ring * segments + run.x)) * sizeof(GLuint)));
+    }
+  }
   glBindVertexArray(dome_vao_.id());
-  // The index buffer's rows are the rings': the first `rings` of them.
-  glDrawElements(GL_TRIANGLES, GLsizei(rings) * 2 * settings_.dome * 6, GL_UNSIGNED_INT, nullptr);
+  glMultiDrawElements(GL_TRIANGLES, dome_counts.data(), GL_UNSIGNED_INT, dome_offsets.data(),
+                      GLsizei(dome_counts.size()));
   timer.end();
 
   timer.begin("aerial");
