@@ -22,6 +22,12 @@ layout(rgba32f, binding = 0) uniform writeonly image3D u_density;
 const int kThetas = SPHERE_SAMPLES, kPhis = SPHERE_SAMPLES;  // phi over [0, pi]
 shared vec3 s_radiance[kThetas * kPhis];  // times the solid angle, and 2 for the mirror
 shared vec3 s_direction[kThetas * kPhis];
+// Rayleigh's phase is 3 / (16 pi) (1 + c^2): its sum against the light is
+// 3 / (16 pi) (S + v^T M v) over the view v, with S the light's sum and M
+// its second moments (a direction and its mirror across the sun's plane
+// cancel the xy and yz terms). Summed once per work group, these take the
+// Rayleigh phase out of the loop over directions of every texel.
+shared vec3 s_moments[64][5];  // per invocation: S, xx, yy, zz, xz
 
 void main() {
   Atmosphere atmosphere = block_atmosphere();
@@ -54,6 +60,25 @@ void main() {
     s_direction[i] = omega;
   }
   barrier();
+  vec3 m[5] = vec3[5](vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0), vec3(0.0));
+  for (int i = int(gl_LocalInvocationIndex); i < kThetas * kPhis; i += 64) {
+    vec3 omega = s_direction[i], l = s_radiance[i];
+    m[0] += l;
+    m[1] += l * (omega.x * omega.x);
+    m[2] += l * (omega.y * omega.y);
+    m[3] += l * (omega.z * omega.z);
+    m[4] += l * (omega.x * omega.z);
+  }
+  for (int k = 0; k < 5; ++k) s_moments[gl_LocalInvocationIndex][k] = m[k];
+  barrier();
+  vec3 sum_l = vec3(0.0), xx = vec3(0.0), yy = vec3(0.0), zz = vec3(0.0), xz = vec3(0.0);
+  for (int j = 0; j < 64; ++j) {
+    sum_l += s_moments[j][0];
+    xx += s_moments[j][1];
+    yy += s_moments[j][2];
+    zz += s_moments[j][3];
+    xz += s_moments[j][4];
+  }
 
   float altitude = r - atmosphere.bottom_radius;
   vec3 sigma_r = atmosphere.rayleigh_scattering * profile_density(atmosphere.rayleigh_density, altitude);
@@ -69,17 +94,20 @@ void main() {
     float cos_phi = sin_view * sin_sun > 1e-6 ? clamp((nu - mu * mu_s) / (sin_view * sin_sun), -1.0, 1.0)
                                               : 1.0;
     vec3 view = vec3(sin_view * cos_phi, sin_view * safe_sqrt(1.0 - cos_phi * cos_phi), mu);
-    vec3 rayleigh = vec3(0.0), mie = vec3(0.0);
+    // Each direction and its mirror image carry half the light: the
+    // moments' sum, with c0^2 + c1^2 = 2 (v.x o.x + v.z o.z)^2 + 2 (v.y o.y)^2.
+    vec3 second = view.x * view.x * xx + view.y * view.y * yy + view.z * view.z * zz +
+                  2.0 * view.x * view.z * xz;
+    vec3 rayleigh = 3.0 / (16.0 * kPi) * (sum_l + second);
+    vec3 mie = vec3(0.0);
     for (int i = 0; i < kThetas * kPhis; ++i) {
       vec3 omega = s_direction[i];
       // The direction and its mirror image across the sun's plane, which
       // carries the same light: half the solid angle each.
       float c0 = dot(view, omega);
       float c1 = dot(view, vec3(omega.x, -omega.y, omega.z));
-      vec3 l = 0.5 * s_radiance[i];
-      rayleigh += l * (rayleigh_phase(c0) + rayleigh_phase(c1));
-      mie += l * (cornette_shanks_phase(atmosphere.mie_g, c0) +
-                  cornette_shanks_phase(atmosphere.mie_g, c1));
+      mie += (0.5 * s_radiance[i]) * (cornette_shanks_phase(atmosphere.mie_g, c0) +
+                                       cornette_shanks_phase(atmosphere.mie_g, c1));
     }
     imageStore(u_density, texel, vec4(sigma_r * rayleigh + sigma_m * mie, 1.0));
   }
