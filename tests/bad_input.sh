@@ -4,20 +4,7 @@
 set -uo pipefail
 planet="$1"; flights="$2"; work="$3"
 rm -rf "$work"; mkdir -p "$work"
-failed=0
-expect() {  # expect "fragment" command...
-  local fragment=$1; shift
-  "$@" > "$work/out.txt" 2> "$work/err.txt"
-  local rc=$?
-  local lines
-  lines=$(wc -l < "$work/err.txt")
-  if [ "$rc" -ne 2 ] || ! grep -q -- "$fragment" "$work/err.txt" || [ "$lines" -ne 1 ]; then
-    echo "FAIL: '$*' gave exit $rc, expected 2 and one line with '$fragment':"; cat "$work/err.txt"
-    failed=1
-  else
-    echo "ok: $(cat "$work/err.txt")"
-  fi
-}
+source "$(dirname "$0")/expect_refusal.sh"
 sun=("$planet" probe sun --planet earth --lon 2.35 --time 2026-06-21T12:00:00Z)
 expect "--lat: 91" "${sun[@]}" --lat 91
 expect "--time: '2026-06-21T25:00:00Z'" "$planet" probe sun --lat 0 --lon 0 --time 2026-06-21T25:00:00Z

@@ -8,20 +8,7 @@ set -uo pipefail
 planet="$1"; flight="$2"; work="$3"
 rm -rf "$work"; mkdir -p "$work"
 export PLANET_CACHE_DIR="$work/cache"
-failed=0
-expect() {  # expect "fragment" command...
-  local fragment=$1; shift
-  "$@" > "$work/out.txt" 2> "$work/err.txt"
-  local rc=$?
-  local lines
-  lines=$(wc -l < "$work/err.txt")
-  if [ "$rc" -ne 2 ] || ! grep -q -- "$fragment" "$work/err.txt" || [ "$lines" -ne 1 ]; then
-    echo "FAIL: '$*' gave exit $rc, expected 2 and one line with '$fragment':"; cat "$work/err.txt"
-    failed=1
-  else
-    echo "ok: $(cat "$work/err.txt")"
-  fi
-}
+source "$(dirname "$0")/expect_refusal.sh"
 nothing_written() {
   for f in "$@"; do
     [ -e "$f" ] && { echo "FAIL: a refused merge wrote $f"; failed=1; }
