@@ -111,9 +111,10 @@ vec3 oneil_surface(Atmosphere atmosphere, OneilPixel p) {
 // bottom sphere or the top: in-scattered Rayleigh and Mie light per unit
 // phase function and the transmittance, with the sum started where the ray
 // enters the atmosphere (from far away the camera's own coordinates have
-// too few bits left for the samples).
-void oneil_ray(Atmosphere atmosphere, vec3 camera, vec3 dir, float t_surface, out vec3 rayleigh,
-               out vec3 mie, out vec3 transmittance) {
+// too few bits left for the samples). `samples` along it: SAMPLES, or 0
+// where the result will not be used.
+void oneil_ray(Atmosphere atmosphere, vec3 camera, vec3 dir, float t_surface, int samples,
+               out vec3 rayleigh, out vec3 mie, out vec3 transmittance) {
   rayleigh = vec3(0.0);
   mie = vec3(0.0);
   transmittance = vec3(1.0);
@@ -128,7 +129,7 @@ void oneil_ray(Atmosphere atmosphere, vec3 camera, vec3 dir, float t_surface, ou
   if (t_end <= t_start) return;
   vec3 origin = camera + t_start * dir;
   oneil_single_scattering(atmosphere, rayleigh_scale(), mie_scale(), origin, dir, hits_ground, 0.0,
-                          t_end - t_start, u_sun_dir, SAMPLES, rayleigh, mie, transmittance);
+                          t_end - t_start, u_sun_dir, samples, rayleigh, mie, transmittance);
 }
 
 // The phase functions per pixel (O'Neil's Mie phase is Cornette and

@@ -51,7 +51,7 @@ void main() {
     dir = cos(ray_psi) * -u_up + sin(ray_psi) * horizontal;
     drawn = cos(drawn_psi) * -u_up + sin(drawn_psi) * horizontal;
   }
-  oneil_ray(atmosphere, camera, dir, kFar, v_rayleigh, v_mie, v_transmittance);
+  oneil_ray(atmosphere, camera, dir, kFar, SAMPLES, v_rayleigh, v_mie, v_transmittance);
   // The ray's direction in the camera's projective frame: x, y over z are
   // its NDC (u_ray_from_ndc maps NDC to rays); behind the camera, z < 0
   // and GL clips it.

@@ -45,6 +45,10 @@ void main() {
   v_sphere_radiance = ground ? atmosphere.solar_irradiance *
                                    ground_radiance(atmosphere, camera + t_ground * dir, u_sun_dir)
                              : vec3(0.0);
-  oneil_ray(atmosphere, camera, dir, t_surface, v_rayleigh, v_mie, v_transmittance);
+  // A vertex over open sky serves no pixel (every triangle with one sends
+  // its pixels to their own rays): no samples, so that a batch of them in
+  // the vertex shader's SIMD leaves the loop at once.
+  oneil_ray(atmosphere, camera, dir, t_surface, v_sky > 0.0 ? 0 : SAMPLES, v_rayleigh, v_mie,
+            v_transmittance);
   gl_Position = vec4(ndc, 0.0, 1.0);
 }

@@ -10,7 +10,7 @@ void main() {
   Atmosphere atmosphere = block_atmosphere();
   OneilPixel p = oneil_pixel(atmosphere, gl_FragCoord.xy);
   vec3 rayleigh, mie, transmittance;
-  oneil_ray(atmosphere, p.camera, p.dir, p.t_surface, rayleigh, mie, transmittance);
+  oneil_ray(atmosphere, p.camera, p.dir, p.t_surface, SAMPLES, rayleigh, mie, transmittance);
   o_radiance = oneil_output(oneil_surface(atmosphere, p) * transmittance +
                             oneil_phased(atmosphere, rayleigh, mie, p.dir));
 }
