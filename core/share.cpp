@@ -35,4 +35,21 @@ std::pair<int, int> share_range(const Share& share, int total) {
   return {edge(share.index), edge(share.index + 1)};
 }
 
+std::vector<std::filesystem::path> share_entries(
+    const std::filesystem::path& folder,
+    const std::function<bool(const std::filesystem::directory_entry&)>& wanted,
+    const std::string& hint) {
+  std::vector<std::filesystem::path> entries;
+  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
+    if (entry.path().filename().string().rfind("share-", 0) == 0 && wanted(entry)) {
+      entries.push_back(entry.path());
+    }
+  }
+  if (entries.empty()) {
+    throw InputError(fmt::format("--merge {}: holds no shares ({})", folder.string(), hint));
+  }
+  std::sort(entries.begin(), entries.end());
+  return entries;
+}
+
 }  // namespace planet

@@ -3,8 +3,11 @@
 // ("--shard K/N", K from 0 as a scheduler's array index counts). Each share
 // does a fixed part of the work, known from K and N alone, so shares can
 // run in any order, anywhere, and again.
+#include <filesystem>
+#include <functional>
 #include <string>
 #include <utility>
+#include <vector>
 
 namespace planet {
 
@@ -25,5 +28,14 @@ Share parse_share(const std::string& text, const std::string& what);
 // can be: shares 0..N-1 cover 0..total once, in order. Some are empty
 // where N > total.
 std::pair<int, int> share_range(const Share& share, int total);
+
+// The entries of `folder` named share-... that `wanted` takes (a share's
+// file, or its folder), in name order: what a merge reads. InputError
+// "--merge FOLDER: holds no shares (HINT)" where there are none; `hint`
+// says what a share looks like and what writes it.
+std::vector<std::filesystem::path> share_entries(
+    const std::filesystem::path& folder,
+    const std::function<bool(const std::filesystem::directory_entry&)>& wanted,
+    const std::string& hint);
 
 }  // namespace planet

@@ -22,21 +22,9 @@ std::vector<std::filesystem::path> share_files(const std::filesystem::path& inpu
   if (!std::filesystem::is_directory(input, ec)) {
     throw InputError(fmt::format("--merge {}: no such file or folder", input.string()));
   }
-  std::vector<std::filesystem::path> files;
-  for (const auto& entry : std::filesystem::directory_iterator(input)) {
-    std::string name = entry.path().filename().string();
-    if (name.rfind("share-", 0) == 0 && entry.path().extension() == ".sums") {
-      files.push_back(entry.path());
-    }
-  }
-  if (files.empty()) {
-    throw InputError(
-        fmt::format("--merge {}: holds no shares (share-K-of-N.sums, written by "
-                    "planet reference --shard K/N)",
-                    input.string()));
-  }
-  std::sort(files.begin(), files.end());
-  return files;
+  return share_entries(
+      input, [](const auto& entry) { return entry.path().extension() == ".sums"; },
+      "share-K-of-N.sums, written by planet reference --shard K/N");
 }
 
 // What the shares of one render must agree on, as (name, value): those a

@@ -101,20 +101,9 @@ std::vector<std::filesystem::path> share_dirs(const std::filesystem::path& input
       normal.filename().string().rfind("share-", 0) == 0) {
     return {input};
   }
-  std::vector<std::filesystem::path> dirs;
-  for (const auto& entry : std::filesystem::directory_iterator(input)) {
-    if (entry.is_directory() && entry.path().filename().string().rfind("share-", 0) == 0) {
-      dirs.push_back(entry.path());
-    }
-  }
-  if (dirs.empty()) {
-    throw InputError(
-        fmt::format("--merge {}: holds no shares (share-K-of-N folders, written by "
-                    "planet capture --shard K/N)",
-                    input.string()));
-  }
-  std::sort(dirs.begin(), dirs.end());
-  return dirs;
+  return share_entries(
+      input, [](const auto& entry) { return entry.is_directory(); },
+      "share-K-of-N folders, written by planet capture --shard K/N");
 }
 
 void copy_atomically(const std::filesystem::path& from, const std::filesystem::path& to) {
