@@ -52,4 +52,22 @@ std::vector<std::filesystem::path> share_entries(
   return entries;
 }
 
+void require_every_share(const std::vector<bool>& present, const std::string& what,
+                         const std::vector<std::filesystem::path>& inputs) {
+  const int count = int(present.size());
+  std::string missing;
+  int missing_count = 0;
+  for (int k = 0; k < count; ++k) {
+    if (present[size_t(k)]) continue;
+    missing += fmt::format("{}{}/{}", missing.empty() ? "" : ", ", k, count);
+    ++missing_count;
+  }
+  if (missing_count == 0) return;
+  std::string where;
+  for (const std::filesystem::path& input : inputs) where += " " + input.string();
+  throw InputError(fmt::format(
+      "share{} {} of {} {} missing from{} ({} of {} found)", missing_count > 1 ? "s" : "", missing,
+      what, missing_count > 1 ? "are" : "is", where, count - missing_count, count));
+}
+
 }  // namespace planet

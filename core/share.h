@@ -38,4 +38,10 @@ std::vector<std::filesystem::path> share_entries(
     const std::function<bool(const std::filesystem::directory_entry&)>& wanted,
     const std::string& hint);
 
+// InputError naming the shares 0..N-1 that `present` lacks ("shares 1/4,
+// 3/4 of WHAT are missing from INPUTS (2 of 4 found)"); nothing where it
+// lacks none.
+void require_every_share(const std::vector<bool>& present, const std::string& what,
+                         const std::vector<std::filesystem::path>& inputs);
+
 }  // namespace planet

@@ -117,21 +117,9 @@ MergedReference merge_reference_shares(const std::vector<std::filesystem::path>&
     }
     slot = &s;
   }
-  std::string missing;
-  int missing_count = 0;
-  for (int k = 0; k < count; ++k) {
-    if (by_index[size_t(k)]) continue;
-    missing += fmt::format("{}{}/{}", missing.empty() ? "" : ", ", k, count);
-    ++missing_count;
-  }
-  if (!missing.empty()) {
-    std::string where;
-    for (const std::filesystem::path& input : inputs) where += " " + input.string();
-    throw InputError(fmt::format("share{} {} of {} {} missing from{} ({} of {} found)",
-                                 missing_count > 1 ? "s" : "", missing, first.scene,
-                                 missing_count > 1 ? "are" : "is", where, count - missing_count,
-                                 count));
-  }
+  std::vector<bool> present(static_cast<size_t>(count), false);
+  for (int k = 0; k < count; ++k) present[size_t(k)] = by_index[size_t(k)] != nullptr;
+  require_every_share(present, first.scene, inputs);
   Medium medium =
       make_medium(scene_atmosphere(merged.scene, scene_body(merged.scene)), merged.mode);
   const std::vector<int> lane_paths = merged.paths.lane_paths(medium.channels.size());

@@ -164,21 +164,9 @@ MergedCapture merge_capture_shares(const std::vector<std::filesystem::path>& inp
           s.first, s.end, share_range(s.share, total).first, share_range(s.share, total).second));
     }
   }
-  std::string missing;
-  int missing_count = 0;
-  for (int k = 0; k < count; ++k) {
-    if (by_index[size_t(k)]) continue;
-    missing += fmt::format("{}{}/{}", missing.empty() ? "" : ", ", k, count);
-    ++missing_count;
-  }
-  if (missing_count > 0) {
-    std::string where;
-    for (const std::filesystem::path& input : inputs) where += " " + input.string();
-    throw InputError(fmt::format("share{} {} of the capture {} missing from{} ({} of {} found)",
-                                 missing_count > 1 ? "s" : "", missing,
-                                 missing_count > 1 ? "are" : "is", where, count - missing_count,
-                                 count));
-  }
+  std::vector<bool> present(static_cast<size_t>(count), false);
+  for (int k = 0; k < count; ++k) present[size_t(k)] = by_index[size_t(k)] != nullptr;
+  require_every_share(present, "the capture", inputs);
   // Every frame's files, before anything is copied.
   const std::vector<std::string> kinds = {".exr", ".png", ".json"};
   for (const CaptureShare* s : by_index) {
