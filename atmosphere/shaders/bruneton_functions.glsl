@@ -60,15 +60,23 @@ Real3 bruneton_optical_depth_from(IN(Atmosphere) atmosphere, IN(Table2D) table, 
   return bruneton_optical_depth_to_top(atmosphere, table, r, ray_r_mu_intersects_ground ? -mu : mu);
 }
 
-Real3 bruneton_transmittance_along(IN(Atmosphere) atmosphere, IN(Table2D) table, IN(Real3) from_r,
+// The depth between r and the point at distance d. One lookup: a ternary
+// between two lookups would cost both on llvmpipe, which runs every side
+// of a branch.
+Real3 bruneton_optical_depth_along(IN(Atmosphere) atmosphere, IN(Table2D) table, IN(Real3) from_r,
                                    Real r, Real mu, Real d, bool ray_r_mu_intersects_ground) {
   Real r_d = clamp(sqrt(d * d + Real(2.0) * r * mu * d + r * r), atmosphere.bottom_radius,
                    atmosphere.top_radius);
   Real mu_d = clamp_cosine((r * mu + d) / r_d);
-  Real3 depth = ray_r_mu_intersects_ground
-                    ? bruneton_optical_depth_to_top(atmosphere, table, r_d, -mu_d) - from_r
-                    : from_r - bruneton_optical_depth_to_top(atmosphere, table, r_d, mu_d);
-  return exp(-max(depth, Real3(0.0)));
+  Real3 at_d =
+      bruneton_optical_depth_to_top(atmosphere, table, r_d, ray_r_mu_intersects_ground ? -mu_d : mu_d);
+  return max(ray_r_mu_intersects_ground ? at_d - from_r : from_r - at_d, Real3(0.0));
+}
+
+Real3 bruneton_transmittance_along(IN(Atmosphere) atmosphere, IN(Table2D) table, IN(Real3) from_r,
+                                   Real r, Real mu, Real d, bool ray_r_mu_intersects_ground) {
+  return exp(-bruneton_optical_depth_along(atmosphere, table, from_r, r, mu, d,
+                                           ray_r_mu_intersects_ground));
 }
 
 Real3 bruneton_transmittance(IN(Atmosphere) atmosphere, IN(Table2D) table, Real r, Real mu, Real d,
@@ -285,13 +293,13 @@ Real bruneton_ray_sample(Real r, Real mu, Real length, int i, int steps) {
 }
 
 // Half the integral of the camera's transmittance over an interval of
-// length dt whose ends see transmittances a and b (exponential between
-// them): what the sum of the integrand's other factor at the two ends is
-// multiplied by.
-Real3 bruneton_segment_weight(Real3 a, Real3 b, Real dt) {
+// length dt whose ends see transmittances a and b, at optical depths
+// depth_a and depth_b from the camera (exponential between them): what the
+// sum of the integrand's other factor at the two ends is multiplied by.
+Real3 bruneton_segment_weight(Real3 a, Real3 b, Real3 depth_a, Real3 depth_b, Real dt) {
   Real3 w;
   for (int c = 0; c < 3; ++c) {
-    Real optical = -log(max(b[c], Real(1e-30)) / max(a[c], Real(1e-30)));
+    Real optical = depth_b[c] - depth_a[c];
     // (a - b) / optical, and the trapezoid's mean where the air is thin.
     w[c] = optical > Real(1e-4) ? (a[c] - b[c]) / optical : Real(0.5) * (a[c] + b[c]);
   }
@@ -311,25 +319,28 @@ void bruneton_single_scattering(IN(Atmosphere) atmosphere, IN(Table2D) transmitt
       bruneton_optical_depth_from(atmosphere, transmittance, r, mu, ray_r_mu_intersects_ground);
   Real3 rayleigh_sum = Real3(0.0), mie_sum = Real3(0.0);
   Real d_before = Real(0.0);
-  Real3 view_before = Real3(1.0), rayleigh_before = Real3(0.0), mie_before = Real3(0.0);
+  Real3 view_before = Real3(1.0), depth_before = Real3(0.0);
+  Real3 rayleigh_before = Real3(0.0), mie_before = Real3(0.0);
   for (int i = 0; i <= steps; ++i) {
     Real d = bruneton_ray_sample(r, mu, length, i, steps);
     Real r_d = clamp(sqrt(d * d + Real(2.0) * r * mu * d + r * r), atmosphere.bottom_radius,
                      atmosphere.top_radius);
     Real mu_s_d = clamp_cosine((r * mu_s + d * nu) / r_d);
-    Real3 view = bruneton_transmittance_along(atmosphere, transmittance, from_r, r, mu, d,
-                                              ray_r_mu_intersects_ground);
+    Real3 depth = bruneton_optical_depth_along(atmosphere, transmittance, from_r, r, mu, d,
+                                               ray_r_mu_intersects_ground);
+    Real3 view = exp(-depth);
     Real3 sun = bruneton_transmittance_to_sun(atmosphere, transmittance, r_d, mu_s_d);
     Real altitude = r_d - atmosphere.bottom_radius;
     Real3 rayleigh_here = sun * profile_density(atmosphere.rayleigh_density, altitude);
     Real3 mie_here = sun * profile_density(atmosphere.mie_density, altitude);
     if (i > 0) {
-      Real3 w = bruneton_segment_weight(view_before, view, d - d_before);
+      Real3 w = bruneton_segment_weight(view_before, view, depth_before, depth, d - d_before);
       rayleigh_sum += w * (rayleigh_before + rayleigh_here);
       mie_sum += w * (mie_before + mie_here);
     }
     d_before = d;
     view_before = view;
+    depth_before = depth;
     rayleigh_before = rayleigh_here;
     mie_before = mie_here;
   }
@@ -350,7 +361,7 @@ Real3 bruneton_multiple_scattering(IN(Atmosphere) atmosphere, IN(Table2D) transm
       bruneton_optical_depth_from(atmosphere, transmittance, r, mu, ray_r_mu_intersects_ground);
   Real3 sum = Real3(0.0);
   Real d_before = Real(0.0);
-  Real3 view_before = Real3(1.0), j_before = Real3(0.0);
+  Real3 view_before = Real3(1.0), depth_before = Real3(0.0), j_before = Real3(0.0);
   for (int i = 0; i <= steps; ++i) {
     Real d = bruneton_ray_sample(r, mu, length, i, steps);
     Real r_i = clamp(sqrt(d * d + Real(2.0) * r * mu * d + r * r), atmosphere.bottom_radius,
@@ -359,11 +370,16 @@ Real3 bruneton_multiple_scattering(IN(Atmosphere) atmosphere, IN(Table2D) transm
     Real mu_s_i = clamp_cosine((r * mu_s + d * nu) / r_i);
     Real3 j = Real3(bruneton_scattering_lookup(atmosphere, density, r_i, mu_i, mu_s_i, nu,
                                                ray_r_mu_intersects_ground));
-    Real3 view = bruneton_transmittance_along(atmosphere, transmittance, from_r, r, mu, d,
-                                              ray_r_mu_intersects_ground);
-    if (i > 0) sum += bruneton_segment_weight(view_before, view, d - d_before) * (j_before + j);
+    Real3 depth = bruneton_optical_depth_along(atmosphere, transmittance, from_r, r, mu, d,
+                                               ray_r_mu_intersects_ground);
+    Real3 view = exp(-depth);
+    if (i > 0) {
+      sum += bruneton_segment_weight(view_before, view, depth_before, depth, d - d_before) *
+             (j_before + j);
+    }
     d_before = d;
     view_before = view;
+    depth_before = depth;
     j_before = j;
   }
   return sum;

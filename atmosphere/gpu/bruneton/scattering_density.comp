@@ -83,6 +83,15 @@ void main() {
   float altitude = r - atmosphere.bottom_radius;
   vec3 sigma_r = atmosphere.rayleigh_scattering * profile_density(atmosphere.rayleigh_density, altitude);
   vec3 sigma_m = atmosphere.mie_scattering * profile_density(atmosphere.mie_density, altitude);
+  // Mie's part is at most its phase function's peak times the light's sum,
+  // Rayleigh's at least 3 / (16 pi) of it: where the first bound falls
+  // under 2^-26 of the second in every channel, adding Mie's part cannot
+  // change the density's float, and the loop over the directions is
+  // skipped (on Earth above some 31 km, 14 of the 32 layers of r).
+  float g = abs(atmosphere.mie_g);
+  float mie_peak = 3.0 / (8.0 * kPi) * (1.0 - g * g) / (2.0 + g * g) * 2.0 / ((1.0 - g) * (1.0 - g) * (1.0 - g));
+  bool mie_counts = any(greaterThanEqual(sigma_m * mie_peak, sigma_r * (3.0 / (16.0 * kPi) / 67108864.0)));
+  int mie_directions = mie_counts ? kThetas * kPhis : 0;
   for (int o = int(gl_LocalInvocationIndex); o < SCATTERING_MU * SCATTERING_NU; o += 64) {
     int mu_index = o / SCATTERING_NU, nu_index = o - mu_index * SCATTERING_NU;
     ivec3 texel = ivec3(nu_index * SCATTERING_MU_S + mu_s_index, mu_index, r_index);
@@ -100,7 +109,7 @@ void main() {
                   2.0 * view.x * view.z * xz;
     vec3 rayleigh = 3.0 / (16.0 * kPi) * (sum_l + second);
     vec3 mie = vec3(0.0);
-    for (int i = 0; i < kThetas * kPhis; ++i) {
+    for (int i = 0; i < mie_directions; ++i) {
       vec3 omega = s_direction[i];
       // The direction and its mirror image across the sun's plane, which
       // carries the same light: half the solid angle each.
