@@ -37,6 +37,7 @@ struct AccuracyArgs {
   std::vector<std::string> scenes;
   std::string paths;            // empty: the best cached reference, else kDefaultPaths
   int width = 32, height = 16;  // the shipped references' size
+  int max_order = 0;            // the ground truth's orders: 0 all
   bool quiet = false;
 };
 
@@ -59,6 +60,7 @@ void run_accuracy(const AccuracyArgs& args) {
   for (Scene& scene : scenes) {
     scene.width = args.width;
     scene.height = args.height;
+    scene.max_order = checked_max_order(args.max_order, "accuracy --max-order");
     scene_atmosphere(scene, scene_body(scene));  // an airless scene fails here
     std::optional<PathBudget> cached = best_cached_budget(scene, ReferenceMode::kRgb);
     budgets.push_back(given ? *given : cached ? *cached : PathBudget(kDefaultPaths));
@@ -146,6 +148,9 @@ void add_accuracy_command(CLI::App& app) {
   cmd->add_option("--height", args->height, "Image height")
       ->check(CLI::Range(1, 4096))
       ->capture_default_str();
+  cmd->add_option("--max-order", args->max_order,
+                  "Measure against the ground truth's first N orders of scattering alone (1: "
+                  "single scattering; default: every order)");
   cmd->add_option("--out", args->out, "Folder for technique, reference and error images");
   cmd->add_flag("--quiet", args->quiet, "No progress and no word of references to render");
   cmd->footer(

@@ -25,6 +25,7 @@ struct ProbeArgs {
   double height_m = 0;
   double zenith_deg = 0, view_zenith_deg = 0, view_azimuth_deg = 0, sun_zenith_deg = 0;
   int paths = 100000;
+  int max_order = 0;  // 0: every order
 };
 
 AtmosphereModel load_model(const std::string& planet, Body& body) {
@@ -81,12 +82,16 @@ void run_sky(const ProbeArgs& args) {
       body.name.c_str(), args.height_m, args.view_zenith_deg, args.view_azimuth_deg,
       args.sun_zenith_deg);
   std::printf(
-      "path-traced reference, %d paths per wavelength, all scattering orders, ground "
+      "path-traced reference, %d paths per wavelength, %s, ground "
       "albedo %g; radiance in W m^-2 sr^-1 nm^-1 (+- one standard error)\n",
-      args.paths, model.ground_albedo);
+      args.paths,
+      args.max_order > 0 ? fmt::format("scattering orders 1 to {}", args.max_order).c_str()
+                         : "all scattering orders",
+      model.ground_albedo);
   std::printf("%15s %15s %15s\n", "wavelength_nm", "radiance", "std_error");
   glm::dvec3 rgb(0.0);
   TraceOptions options;
+  options.max_order = args.max_order;
   // Seconds at 100000 paths: a wait that shows its progress.
   Progress progress("probe sky", double(medium.channels.size()), "wavelength");
   progress.update(0);
@@ -130,6 +135,10 @@ void add_probe_atmosphere_commands(CLI::App& probe) {
       ->check(CLI::Range(100, 100000000))
       ->capture_default_str();
   s->add_option("--mode", args->mode, "rgb or spectral")->capture_default_str();
+  s->add_option("--max-order", args->max_order,
+                "Sum only the first N orders of scattering (1: single scattering alone; "
+                "default: every order)")
+      ->check(CLI::Range(1, 1000));
   s->callback([args] { run_sky(*args); });
 }
 

@@ -30,6 +30,7 @@ struct ReferenceArgs {
   std::string shard;
   std::vector<std::string> merge;
   int width = 0, height = 0;
+  int max_order = 0;
   bool list = false, quiet = false;
 };
 
@@ -117,6 +118,7 @@ void run_reference(const ReferenceArgs& args) {
   Scene scene = find_scene(args.scene);
   if (args.width > 0) scene.width = args.width;
   if (args.height > 0) scene.height = args.height;
+  scene.max_order = checked_max_order(args.max_order, "reference --max-order");
   ReferenceMode mode = parse_reference_mode(args.mode);
   PathBudget budget = PathBudget::parse(args.paths);
   Body body = scene_body(scene);
@@ -161,8 +163,10 @@ void run_reference(const ReferenceArgs& args) {
   write_tone_mapped_png(png, image, scene.exposure);
   folder.keep();
   double traced = pixels * budget.spp * (1.0 - render.started_share);
-  std::printf("%s: %dx%d, %s spp, %s, %s in %.1f s (%.3g paths/s)\n", scene.name.c_str(),
-              scene.width, scene.height, budget.label().c_str(), args.mode.c_str(),
+  std::string orders =
+      scene.max_order > 0 ? fmt::format(", orders 1 to {}", scene.max_order) : "";
+  std::printf("%s: %dx%d, %s spp, %s%s, %s in %.1f s (%.3g paths/s)\n", scene.name.c_str(),
+              scene.width, scene.height, budget.label().c_str(), args.mode.c_str(), orders.c_str(),
               was_cached ? "from the cache" : "rendered", seconds,
               was_cached ? 0.0 : traced / seconds);
   if (!render.started_from.empty()) {
@@ -209,6 +213,9 @@ void add_reference_command(CLI::App& app) {
                   "Put the shares in these folders (or files) together into --out, byte for "
                   "byte the render made at once")
       ->expected(1, -1);
+  cmd->add_option("--max-order", args->max_order,
+                  "Sum only the first N orders of scattering (1: single scattering alone; "
+                  "default: every order); cached apart from the full ground truth");
   cmd->add_flag("--list", args->list, "List the canonical scenes");
   cmd->add_flag("--quiet", args->quiet, "No progress line");
   cmd->callback([args] { run_reference(*args); });

@@ -81,6 +81,8 @@ void hash_view(Hasher& h, const Scene& scene, const AtmosphereModel& m, Referenc
       h.number(scene.camera.body_from_camera.y), h.number(scene.camera.body_from_camera.z);
   h.number(scene.camera.vertical_fov), h.number(scene.width), h.number(scene.height);
   h.number(scene.projection == Projection::kPerspective ? 0 : 1);
+  // Only where limited, so that the keys of the full ground truth stand.
+  if (scene.max_order > 0) h.text("max order"), h.number(scene.max_order);
 }
 
 }  // namespace
@@ -115,8 +117,8 @@ std::string reference_model_key(const AtmosphereModel& m, ReferenceMode mode) {
 
 std::filesystem::path reference_cache_file(const Scene& scene, const AtmosphereModel& model,
                                            const PathBudget& paths, ReferenceMode mode) {
-  return reference_cache_dir() / fmt::format("{}-{}x{}-{}spp-{}-{}.exr", scene.name, scene.width,
-                                             scene.height, paths.label(), to_string(mode),
+  return reference_cache_dir() / fmt::format("{}-{}spp-{}-{}.exr", reference_stem(scene),
+                                             paths.label(), to_string(mode),
                                              reference_key(scene, model, paths, mode));
 }
 
@@ -158,7 +160,7 @@ std::optional<std::pair<std::filesystem::path, RenderSums>> find_start(
     const std::vector<int>& lane_paths) {
   std::optional<std::pair<std::filesystem::path, RenderSums>> best;
   std::error_code ec;
-  std::string prefix = fmt::format("{}-{}x{}-", scene.name, scene.width, scene.height);
+  std::string prefix = reference_stem(scene) + "-";
   std::string mode_part = fmt::format("spp-{}-", to_string(mode));
   for (const std::filesystem::path& dir : reference_dirs()) {
     for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
@@ -196,6 +198,7 @@ ReferenceRender reference_render(const Scene& scene, const PathBudget& paths, Re
   ReferenceSettings settings;
   settings.paths = paths;
   settings.seed = scene.seed();
+  settings.trace.max_order = scene.max_order;
   settings.progress = progress;
   settings.cancel = cancel;
   bool checkpointed = false;
@@ -243,7 +246,7 @@ bool reference_cached(const Scene& scene, const PathBudget& paths, ReferenceMode
 
 std::optional<PathBudget> best_cached_budget(const Scene& scene, ReferenceMode mode) {
   AtmosphereModel model = scene_atmosphere(scene, scene_body(scene));
-  std::string prefix = fmt::format("{}-{}x{}-", scene.name, scene.width, scene.height);
+  std::string prefix = reference_stem(scene) + "-";
   std::string suffix = fmt::format("spp-{}-", to_string(mode));
   std::optional<PathBudget> best;
   double best_paths = 0;
@@ -297,6 +300,7 @@ RenderCost estimate_reference_cost(const Scene& scene, const PathBudget& paths,
   ReferenceSettings trial;
   trial.paths = PathBudget(trial_counts);
   trial.seed = scene.seed();
+  trial.trace.max_order = scene.max_order;
   ReferenceImage image = render_reference(medium, reference_view(scene, body, model), trial);
   double trial_paths = double(image.paths);
   double pixels = double(scene.width) * double(scene.height);
@@ -324,10 +328,12 @@ std::string describe_uncached_reference(const Scene& scene, const PathBudget& pa
       cost.already_done > 0
           ? fmt::format(", going on from sums that hold {:.1f}% of it", 100.0 * cost.already_done)
           : "";
+  std::string orders =
+      scene.max_order > 0 ? fmt::format(", up to {} orders of scattering", scene.max_order) : "";
   return fmt::format(
-      "no reference of {} ({}x{}, {} paths per pixel, {}) is cached in {}: rendering it{} takes "
+      "no reference of {} ({}x{}, {} paths per pixel, {}{}) is cached in {}: rendering it{} takes "
       "about {} on {} threads; it is cached for next time, and Ctrl-C keeps what is done",
-      scene.name, scene.width, scene.height, paths.label(), to_string(mode),
+      scene.name, scene.width, scene.height, paths.label(), to_string(mode), orders,
       reference_cache_dir().string(), went_on, duration(cost.seconds), cost.threads);
 }
 

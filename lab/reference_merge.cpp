@@ -33,6 +33,7 @@ std::vector<std::pair<std::string, std::string>> shared_fields(const ReferenceSh
   return {{"scene", id.scene},
           {"size", fmt::format("{}x{}", id.width, id.height)},
           {"mode", id.mode},
+          {"orders", id.max_order > 0 ? std::to_string(id.max_order) : "all"},
           {"spp", id.paths},
           {"share count", std::to_string(id.share.count)}};
 }
@@ -91,6 +92,7 @@ MergedReference merge_reference_shares(const std::vector<std::filesystem::path>&
   merged.scene = find_scene(first.scene);
   merged.scene.width = first.width;
   merged.scene.height = first.height;
+  merged.scene.max_order = first.max_order;
   merged.mode = parse_reference_mode(first.mode);
   merged.paths = PathBudget::parse(first.paths);
   ReferenceShareId ours = reference_share_id(merged.scene, merged.paths, merged.mode, Share{});

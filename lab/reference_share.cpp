@@ -28,6 +28,7 @@ ReferenceShareId reference_share_id(const Scene& scene, const PathBudget& paths,
   id.width = scene.width;
   id.height = scene.height;
   id.mode = to_string(mode);
+  id.max_order = scene.max_order;
   id.paths = paths.label();
   id.model = reference_model_key(model, mode);
   id.view = reference_view_key(scene, model, mode);
@@ -55,10 +56,11 @@ std::filesystem::path reference_share_checkpoint(const std::filesystem::path& sh
 void write_reference_share(const std::filesystem::path& file, const ReferenceShareId& id,
                            const RenderSums& sums) {
   std::string bytes = fmt::format(
-      "{}\nscene {}\nsize {}x{}\nmode {}\npaths {}\nmodel {}\nview {}\ntracer {}\nplanet {}\n"
-      "share {}\nlanes {}\ndone",
-      kShareMagic, id.scene, id.width, id.height, id.mode, id.paths, id.model, id.view, id.tracer,
-      id.planet, id.share.label(), sums.done.size());
+      "{}\nscene {}\nsize {}x{}\nmode {}\norders {}\npaths {}\nmodel {}\nview {}\ntracer {}\n"
+      "planet {}\nshare {}\nlanes {}\ndone",
+      kShareMagic, id.scene, id.width, id.height, id.mode,
+      id.max_order > 0 ? std::to_string(id.max_order) : "all", id.paths, id.model, id.view,
+      id.tracer, id.planet, id.share.label(), sums.done.size());
   for (int n : sums.done) bytes += fmt::format(" {}", n);
   bytes += "\n";
   const size_t lanes = sums.done.size();
@@ -98,6 +100,17 @@ ReferenceShareFile read_reference_share(const std::filesystem::path& file) {
     throw bad(fmt::format("its size '{}' is not WIDTHxHEIGHT", size));
   }
   id.mode = field("mode");
+  std::string orders = field("orders");
+  if (orders != "all") {
+    try {
+      id.max_order = std::stoi(orders);
+    } catch (const std::exception&) {
+      id.max_order = -1;
+    }
+    if (id.max_order < 1 || std::to_string(id.max_order) != orders) {
+      throw bad(fmt::format("its orders '{}' are neither 'all' nor a count from 1", orders));
+    }
+  }
   id.paths = field("paths");
   id.model = field("model");
   id.view = field("view");
@@ -154,6 +167,7 @@ ReferenceShareRender render_reference_share(const Scene& scene, const PathBudget
   ReferenceSettings settings;
   settings.paths = paths;
   settings.seed = scene.seed();
+  settings.trace.max_order = scene.max_order;
   settings.share = share;
   settings.progress = progress;
   settings.cancel = cancel;

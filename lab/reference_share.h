@@ -23,6 +23,7 @@ struct ReferenceShareId {
   std::string scene;
   int width = 0, height = 0;
   std::string mode;    // to_string(ReferenceMode)
+  int max_order = 0;   // Scene::max_order: 0 every order
   std::string paths;   // PathBudget::label()
   std::string model;   // reference_model_key: the model as loaded
   std::string view;    // reference_view_key: camera, sun, size and model

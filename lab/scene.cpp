@@ -168,6 +168,19 @@ AtmosphereModel scene_atmosphere(const Scene& scene, const Body& body) {
   return model;
 }
 
+std::string reference_stem(const Scene& scene) {
+  std::string orders = scene.max_order > 0 ? fmt::format("-order{}", scene.max_order) : "";
+  return fmt::format("{}{}-{}x{}", scene.name, orders, scene.width, scene.height);
+}
+
+int checked_max_order(int max_order, const std::string& where) {
+  if (max_order < 0 || max_order > 1000) {
+    throw InputError(fmt::format(
+        "{}: {} is not an order count from 1 to 1000 (0 or none: every order)", where, max_order));
+  }
+  return max_order;
+}
+
 ReferenceView reference_view(const Scene& scene, const Body& body, const AtmosphereModel& model) {
   ReferenceView view;
   view.width = scene.width;

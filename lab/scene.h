@@ -31,6 +31,9 @@ struct Scene {
   int width = 128, height = 64;
   Projection projection = Projection::kPerspective;
   double exposure = 10.0;  // a tone-mapping exposure that shows the scene well
+  // The orders of scattering its ground truth sums: 0 all of them, 1 single
+  // scattering alone, N up to N events a path (reference --max-order).
+  int max_order = 0;
 
   // Seeds the path tracer's random streams: a hash of the name.
   uint64_t seed() const;
@@ -40,6 +43,12 @@ struct Scene {
 std::vector<Scene> canonical_scenes();
 // A canonical scene by name; InputError naming the known ones otherwise.
 Scene find_scene(const std::string& name);
+
+// What names the scene's renders in the reference cache: "earth_noon-32x16",
+// "earth_noon-order1-32x16" for its ground truth limited to one order.
+std::string reference_stem(const Scene& scene);
+// The --max-order value checked: 0 (all orders) to 1000; InputError otherwise.
+int checked_max_order(int max_order, const std::string& where);
 
 // The paths per pixel of a canonical scene's shipped 32x16 reference
 // (data/reference), per channel where they differ: the first six were set

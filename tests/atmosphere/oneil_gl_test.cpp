@@ -107,17 +107,21 @@ ImageRGB render_without_absorber(const Scene& scene, const std::string& techniqu
   return image_from_gl(scene.width, scene.height, renderer.read_hdr());
 }
 
-// The requirement: on Mars and the asteroid, whose ratios of scale
-// height to thickness are not the chapter's, the fitted scale function
-// beats the fixed one in every channel. Measured against what the
-// scale function approximates, single scattering, by the raymarch
-// baseline at its fine quality, with the absorber (which O'Neil's model
-// lacks) out of both; the path-traced references hold multiple scattering,
-// which no scale function brings. Measured (relative RMSE, worst channel):
-// fitted 0.39 / 1.39 / 0.25 / 0.94 %, chapter 6.6 / 103 / 40 / 154 % on Mars
-// noon, Mars sunset, the asteroid's surface and the asteroid from space.
-// Against the path-traced references instead, the chapter's polynomial is
-// the nearer on Mars (its error offsets the missing multiple scattering):
+// On Mars and the asteroid, whose ratios of scale height to thickness are
+// not the chapter's, the fitted scale function beats the fixed one in every
+// channel. Measured against what a scale function approximates, single
+// scattering, twice:
+// - by the raymarch baseline at its fine quality, with the absorber (which
+//   O'Neil's model lacks) out of both. Measured (relative RMSE, worst
+//   channel): fitted 0.39 / 1.39 / 0.25 / 0.94 %, chapter 6.6 / 103 / 40 /
+//   154 % on Mars noon, Mars sunset, the asteroid's surface and from space;
+// - by the path tracer's first order alone (the shipped `--max-order 1`
+//   references), the absorber in, over the open sky (the ground's light
+//   from the sky is the second order). Measured (R / G / B): fitted 2.2 /
+//   2.2 / 2.2 %, chapter 8.6 / 7.8 / 7.7 % on Mars noon; the rest are
+//   printed.
+// Against the full ground truth instead, the chapter's polynomial is the
+// nearer on Mars (its error offsets the missing multiple scattering):
 // planet accuracy --technique oneil:scale=chapter shows it.
 TEST(OneilScaleGLTest, FittedScaleBeatsTheChaptersOnMarsAndTheAsteroid) {
   auto context = GlContext::create_headless();
@@ -138,91 +142,31 @@ TEST(OneilScaleGLTest, FittedScaleBeatsTheChaptersOnMarsAndTheAsteroid) {
   }
 }
 
-// exposure=chapter: the technique writes the chapter's display values
-// 1 - exp(-exposure L) of the radiance it draws by default, and the frame's
-// tone map passes them through (to 8 bits, with its half-step dither).
-TEST(OneilExposureGLTest, ChapterExposureReplacesTheToneMap) {
-  auto context = GlContext::create_headless();
-  Scene scene = small_scene("earth_noon");
-  Body body = scene_body(scene);
-  AtmosphereModel model = scene_atmosphere(scene, body);
-  auto draw = [&](const std::string& technique, std::vector<uint8_t>* ldr) {
-    FrameRenderer renderer(kWidth, kHeight);
-    renderer.set_body(body, model, make_technique(technique));
-    renderer.render(scene.camera, scene.sun_dir_body, scene.exposure);
-    if (ldr) *ldr = renderer.read_ldr();
-    return renderer.read_hdr();
-  };
-  std::vector<float> radiance = draw("oneil", nullptr);
-  std::vector<uint8_t> ldr;
-  std::vector<float> display = draw("oneil:exposure=chapter", &ldr);
-  ASSERT_EQ(radiance.size(), display.size());
-  int differ = 0;
-  for (size_t i = 0; i < radiance.size(); ++i) {
-    if (i % 4 == 3) continue;
-    float expected = 1.0f - std::exp(-float(scene.exposure) * radiance[i]);
-    EXPECT_NEAR(display[i], expected, 1e-5f) << "texel " << i;
-    EXPECT_NEAR(float(ldr[i]), 255.0f * display[i], 1.0f) << "texel " << i;
-    differ += std::abs(display[i] - radiance[i]) > 1e-3f;
-  }
-  EXPECT_GT(differ, 0);
-}
+constexpr int kFirstOrderPaths = 65536;  // of the shipped --max-order 1 references
 
-// The sun's disk seen past the planet from deep space, where no ray meets
-// the atmosphere, as the raymarch baseline draws it (the same shared
-// sun.glsl): a 0.2 deg view into the disk's middle.
-TEST(OneilSunGLTest, SunDiskShowsFromDeepSpace) {
+TEST(OneilScaleGLTest, FittedScaleBeatsTheChaptersAgainstThePathTracersFirstOrder) {
   auto context = GlContext::create_headless();
-  Body body = load_body(data_dir() / "planets" / "earth.json");
-  body.terrain = nullptr;
-  AtmosphereModel model = load_atmosphere(body);
-  auto view = view_from_place(body.shape, {glm::radians(46.5), glm::radians(8.0), 1e9}, 90.0, 30.0,
-                              0.2, 30.0, 90.0);
-  auto centre = [&](const std::string& technique) {
-    FrameRenderer renderer(kWidth, kHeight);
-    renderer.set_body(body, model, make_technique(technique));
-    renderer.render(view.camera, view.sun_dir_body, 10.0);
-    std::vector<float> hdr = renderer.read_hdr();
-    return hdr[(size_t(kHeight / 2) * kWidth + kWidth / 2) * 4 + 1];
-  };
-  float raymarch = centre("raymarch"), oneil = centre("oneil");
-  EXPECT_GT(raymarch, 1e3f);
-  EXPECT_NEAR(oneil / raymarch, 1.0f, 1e-4f);
-}
-
-// Every canonical scene, and the camera at 1 m, 100 km, 1e6 km and inside
-// the planet on every body with the sun high, low, set and at the nadir:
-// no NaN or Inf anywhere in the image.
-TEST(OneilCanonicalGLTest, NoNanOrInfInAnySceneOrView) {
-  auto context = GlContext::create_headless();
-  for (Scene scene : canonical_scenes()) {
+  for (const char* name : {"mars_noon", "mars_sunset", "asteroid_surface", "asteroid_space"}) {
+    Scene scene = small_scene(name);
+    scene.max_order = 1;
     Body body = scene_body(scene);
-    if (!body.has_atmosphere()) continue;
-    SCOPED_TRACE(scene.name);
-    scene.width = kWidth;
-    scene.height = kHeight;
-    EXPECT_TRUE(all_finite(render_scene_with(scene, "oneil").pixels));
-  }
-  for (const char* planet : {"earth", "mars", "asteroid"}) {
-    Body body = load_body(data_dir() / "planets" / (std::string(planet) + ".json"));
-    body.terrain = nullptr;  // the camera stays where it is put
-    AtmosphereModel model = load_atmosphere(body);
-    FrameRenderer renderer(kWidth, kHeight);
-    renderer.set_body(body, model, make_technique("oneil"));
-    struct View {
-      const char* what;
-      double height, pitch_deg;
-    };
-    for (const View& view : {View{"1 m", 1.0, 5.0}, View{"100 km", 100e3, -20.0},
-                             View{"1e6 km", 1e9, -90.0}, View{"inside", -2000.0, 5.0}}) {
-      for (double sun_elevation : {60.0, 2.0, -5.0, -90.0}) {
-        SCOPED_TRACE(::testing::Message()
-                     << planet << ", " << view.what << ", sun at " << sun_elevation << " deg");
-        auto v = view_from_place(body.shape, {glm::radians(46.5), glm::radians(8.0), view.height},
-                                 0.0, view.pitch_deg, 90.0, sun_elevation, 90.0);
-        renderer.render(v.camera, v.sun_dir_body, 10.0);
-        EXPECT_TRUE(all_finite(renderer.read_hdr()));
-      }
+    AtmosphereModel model = scene_atmosphere(scene, body);
+    PathBudget paths(kFirstOrderPaths);
+    auto shipped = shipped_reference_dir() /
+                   reference_cache_file(scene, model, paths, ReferenceMode::kRgb).filename();
+    ASSERT_TRUE(std::filesystem::exists(shipped)) << shipped << " is not shipped";
+    ImageRGB truth = reference_image(scene, paths);
+    TechniqueAccuracy fitted = measure_accuracy(scene, render_scene_with(scene, "oneil"), truth);
+    TechniqueAccuracy chapter =
+        measure_accuracy(scene, render_scene_with(scene, "oneil:scale=chapter"), truth);
+    ASSERT_GT(fitted.sky_pixels, 0) << name;
+    for (int c = 0; c < 3; ++c) {
+      double f = fitted.sky_channels[size_t(c)].relative();
+      double h = chapter.sky_channels[size_t(c)].relative();
+      std::printf("%s channel %d, open sky, against the first order: %.2f%% fitted, %.2f%% "
+                  "chapter\n",
+                  name, c, 100 * f, 100 * h);
+      EXPECT_LT(f, h) << name << " channel " << c;
     }
   }
 }
