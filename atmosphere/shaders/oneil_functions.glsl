@@ -109,12 +109,17 @@ Real oneil_column(IN(Atmosphere) atmosphere, IN(OneilScale) s, Real r, Real mu) 
   }
   // The column along the mirrored ray serves both cases: written once, a
   // SIMD rasteriser (llvmpipe), which runs every side of a branch, pays for
-  // two evaluations instead of three.
-  Real mirrored = oneil_column_up(atmosphere, s, r, abs(mu));
-  if (mu >= Real(0.0)) return mirrored;
-  Real r_perigee = max(r * sqrt(max(Real(1.0) - mu * mu, Real(0.0))), atmosphere.bottom_radius);
-  return max(Real(2.0) * oneil_column_up(atmosphere, s, r_perigee, Real(0.0)) - mirrored,
-             Real(0.0));
+  // two evaluations instead of three. The perigee's is in a loop run once
+  // or not at all: llvmpipe leaves a loop as soon as no lane of its batch
+  // is in it, where it would run an if's body for any batch (most rays,
+  // the sun's by day and the camera's up from a sample, point up).
+  Real column = oneil_column_up(atmosphere, s, r, abs(mu));
+  for (int below = mu < Real(0.0) ? 1 : 0; below > 0; --below) {
+    Real r_perigee = max(r * sqrt(max(Real(1.0) - mu * mu, Real(0.0))), atmosphere.bottom_radius);
+    column = max(Real(2.0) * oneil_column_up(atmosphere, s, r_perigee, Real(0.0)) - column,
+                 Real(0.0));
+  }
+  return column;
 }
 
 // The columns (Rayleigh in x, Mie in y) from point p along the unit

@@ -9,6 +9,9 @@
 layout(location = 0) out vec4 o_radiance;
 
 void main() {
+  // A drawn surface first, from its depth alone: llvmpipe skips the rest
+  // of the shader for a batch of pixels that are all discarded.
+  if (texelFetch(u_depth, ivec2(gl_FragCoord.xy), 0).r > 0.0) discard;
   Atmosphere atmosphere = block_atmosphere();
   OneilPixel p = oneil_pixel(atmosphere, gl_FragCoord.xy);
   if (p.t_surface < kFar || p.hits_ground) discard;

@@ -20,9 +20,10 @@ in float v_on_sphere;
 layout(location = 0) out vec4 o_radiance;
 
 void main() {
+  if (v_sky > 0.0) discard;
   Atmosphere atmosphere = block_atmosphere();
   OneilPixel p = oneil_pixel(atmosphere, gl_FragCoord.xy);
-  if (v_sky > 0.0 || (p.t_surface == kFar && v_on_sphere < 1.0)) discard;
+  if (p.t_surface == kFar && v_on_sphere < 1.0) discard;
   float distance = p.t_surface < kFar ? p.t_surface : p.t_ground;
   if (abs(v_inverse_distance * distance - 1.0) > DISTANCE_TOLERANCE) discard;
   vec3 surface = p.t_surface < kFar ? texelFetch(u_surface, p.pixel, 0).rgb : v_sphere_radiance;

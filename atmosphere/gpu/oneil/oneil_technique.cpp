@@ -255,12 +255,14 @@ void OneilTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   glm::dvec3 north = glm::cross(up, east);
   bool outside = glm::length(camera) >= model_.top_radius;
 
-  timer.begin("sky");
+  timer.begin("classify");
   // Every pixel: the sky's are marked, and given the sun as seen from space.
   set_frame_uniforms(classify_program_, frame);
   glStencilFunc(GL_ALWAYS, kSkyPixel, 0xff);
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
   fullscreen_.draw();
+  timer.end();
+  timer.begin("sky");
   // From outside, the dome is the ring between the planet's disk and the
   // limb, a few pixels wide from far away: rings no closer than half a
   // pixel (they crowd toward both edges), but never fewer than 16 (with 4,
