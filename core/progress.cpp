@@ -12,9 +12,14 @@ namespace planet {
 
 namespace {
 std::atomic<bool> g_shown{true};
+ProgressObserver& observer() {
+  static ProgressObserver o;
+  return o;
+}
 }  // namespace
 
 void set_progress_shown(bool shown) { g_shown = shown; }
+void set_progress_observer(ProgressObserver o) { observer() = std::move(o); }
 bool progress_shown() { return g_shown.load(); }
 
 Progress::Progress(std::string label, double total, std::string unit, bool quiet)
@@ -33,7 +38,7 @@ void Progress::begin_at(double done) {
 }
 
 void Progress::update(double done) {
-  if (quiet_ || total_ <= 0) return;
+  if (total_ <= 0 || (quiet_ && !observer())) return;
   double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
   double rate = (done - base_) / std::max(elapsed, 1e-9);
   double left = rate > 0 ? (total_ - done) / rate : 0.0;
@@ -52,6 +57,8 @@ void Progress::update(double done) {
     line = fmt::format("{}: {:3.0f}% of {:.3g} {}s{}{}", label_, 100.0 * done / total_, total_,
                        unit_, rate_text, time_left);
   }
+  if (observer()) observer()(line, done / total_);
+  if (quiet_) return;
   if (terminal_) {
     std::fprintf(stderr, "\r%s   ", line.c_str());
     std::fflush(stderr);

@@ -3,6 +3,7 @@
 // terminal one line rewritten in place, in a log a line per tenth of the
 // work. Every wait longer than a second shows one.
 #include <chrono>
+#include <functional>
 #include <string>
 
 namespace planet {
@@ -11,6 +12,12 @@ namespace planet {
 // the waits deep inside them too: a technique's precompute, say).
 void set_progress_shown(bool shown);
 bool progress_shown();
+
+// Sees every update's line and the fraction done, shown or quiet: a window
+// whose loop a long wait holds puts it in its title (fly, while a
+// technique's tables are computed). One at a time; an empty one removes it.
+using ProgressObserver = std::function<void(const std::string& line, double fraction)>;
+void set_progress_observer(ProgressObserver observer);
 
 class Progress {
  public:

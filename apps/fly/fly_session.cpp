@@ -2,6 +2,7 @@
 
 #include "atmosphere/gpu/registry.h"
 #include "core/image_io.h"
+#include "core/progress.h"
 #include "gl/context.h"
 #include "sim/free_flight.h"
 #include "sim/geodesy.h"
@@ -118,7 +119,16 @@ void FlySession::attach(const Body& body) {
   TerrainOptions terrain;
   terrain.pixel_budget = double(lod_pixels_);
   renderer_->set_terrain_options(terrain);
+  // A technique's first tables for a model (bruneton's take seconds) hold
+  // the loop: their progress goes to the window's title, and the window
+  // keeps answering the desktop (key presses wait in their queue).
+  set_progress_observer([this](const std::string& line, double) {
+    glfwSetWindowTitle(window_, ("planet fly: " + line).c_str());
+    glfwPollEvents();
+  });
   renderer_->set_body(body, atmosphere, std::move(technique));
+  set_progress_observer(nullptr);
+  glfwSetWindowTitle(window_, "planet fly");
 }
 
 // A new body: the pilot starts over the start place (a few km up unless it
