@@ -127,17 +127,24 @@ void shade_only(GLint stencil_class) {
 
 // Two triangles per cell of a (columns + 1) x (rows + 1) grid of vertices
 // numbered row by row.
-std::vector<GLuint> grid_indices(int columns, int rows) {
-  std::vector<GLuint> indices;
-  indices.reserve(size_t(columns) * size_t(rows) * 6);
-  for (int j = 0; j < rows; ++j) {
-    for (int i = 0; i < columns; ++i) {
-      GLuint a = GLuint(j * (columns + 1) + i), b = a + 1;
-      GLuint c = a + GLuint(columns + 1), d = c + 1;
-      indices.insert(indices.end(), {a, b, d, a, d, c});
-    }
-  }
-  return indices;
+// The two triangles of cell (i, j) of a mesh with `columns` cells a row,
+// whose vertex (i, j) is j (columns + 1) + i.
+void add_cell(std::vector<GLuint>& indices, int columns, int i, int j) {
+  GLuint a = GLuint(j * (columns + 1) + i), b = a + 1;
+  GLuint c = a + GLuint(columns + 1), d = c + 1;
+  indices.insert(indices.end(), {a, b, d, a, d, c});
+}
+
+// A frame's cells go to the GPU as one index list and are drawn in one
+// call: llvmpipe shades a vertex once a draw, so a draw per row of cells
+// shaded every row of vertices twice (the dome's sums, at 8 samples, are
+// most of its pass).
+void draw_cells(const Buffer& buffer, const VertexArray& vao, const std::vector<GLuint>& indices) {
+  if (indices.empty()) return;
+  glNamedBufferSubData(buffer.id(), 0, GLsizeiptr(indices.size() * sizeof(GLuint)),
+                       indices.data());
+  glBindVertexArray(vao.id());
+  glDrawElements(GL_TRIANGLES, GLsizei(indices.size()), GL_UNSIGNED_INT, nullptr);
 }
 
 VertexArray indexed_vao(const Buffer& indices) {
@@ -179,9 +186,10 @@ OneilTechnique::OneilTechnique(Settings settings)
   pixel_program_ = Program::graphics("gl/shaders/fullscreen.vert",
                                      "atmosphere/gpu/oneil/oneil_pixel.frag", defines);
   // The dome: rings 0..dome, 2 dome segments around (the last column
-  // repeats the first, so that the mesh closes).
-  std::vector<GLuint> dome = grid_indices(2 * settings_.dome, settings_.dome);
-  dome_indices_ = make_buffer(dome.size() * sizeof(GLuint), dome.data(), 0);
+  // repeats the first, so that the mesh closes); room for all its cells.
+  dome_indices_ = make_buffer(size_t(settings_.dome) * size_t(2 * settings_.dome) * 6 *
+                                  sizeof(GLuint),
+                              nullptr);
   dome_vao_ = indexed_vao(dome_indices_);
   check_gl_errors("OneilTechnique setup");
 }
@@ -230,8 +238,7 @@ void OneilTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   const int cell = settings_.cell;
   const int columns = (frame.width + cell - 1) / cell, rows = (frame.height + cell - 1) / cell;
   if (columns != grid_width_ || rows != grid_height_) {
-    std::vector<GLuint> grid = grid_indices(columns, rows);
-    grid_indices_ = make_buffer(grid.size() * sizeof(GLuint), grid.data(), 0);
+    grid_indices_ = make_buffer(size_t(columns) * size_t(rows) * 6 * sizeof(GLuint), nullptr);
     grid_vao_ = indexed_vao(grid_indices_);
     grid_width_ = columns;
     grid_height_ = rows;
@@ -292,22 +299,18 @@ void OneilTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   glUniformMatrix3fv(dome_program_.uniform("u_ndc_from_ray"), 1, GL_FALSE,
                      glm::value_ptr(ndc_from_ray));
   shade_only(kSkyPixel);
-  // The index buffer's rows are the rings' (the first `rings` of them), and
-  // the cells of a row its sectors of azimuth: only those in view are drawn,
-  // a sixth of the dome's vertices and their sums from the ground.
+  // The mesh's rows are the rings (the first `rings` of them), and the
+  // cells of a row its sectors of azimuth: only those in view are drawn, a
+  // sixth of the dome's vertices and their sums from the ground; sector
+  // by sector, so that each column of vertices serves the next sector too.
   const int segments = 2 * settings_.dome;
-  std::vector<GLsizei> dome_counts;
-  std::vector<const void*> dome_offsets;
+  std::vector<GLuint> dome_cells;
   for (glm::ivec2 run : visible_sectors(frame, up, east, north, segments)) {
-    for (int ring = 0; ring < rings; ++ring) {
-      dome_counts.push_back(GLsizei(6 * (run.y - run.x)));
-      dome_offsets.push_back(
-          reinterpret_cast<const void*>(size_t(6 * (ring * segments + run.x)) * sizeof(GLuint)));
+    for (int segment = run.x; segment < run.y; ++segment) {
+      for (int ring = 0; ring < rings; ++ring) add_cell(dome_cells, segments, segment, ring);
     }
   }
-  glBindVertexArray(dome_vao_.id());
-  glMultiDrawElements(GL_TRIANGLES, dome_counts.data(), GL_UNSIGNED_INT, dome_offsets.data(),
-                      GLsizei(dome_counts.size()));
+  draw_cells(dome_indices_, dome_vao_, dome_cells);
   timer.end();
 
   timer.begin("aerial");
@@ -324,16 +327,11 @@ void OneilTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   // Only the cells over the atmosphere: a surface beyond it, if any, is
   // left to the pixels' own rays, which see no air there.
   CellRange range = cells_of_sphere(frame, model_.top_radius, cell, columns, rows);
-  std::vector<GLsizei> counts;
-  std::vector<const void*> offsets;
+  std::vector<GLuint> grid_cells;
   for (int j = range.first.y; j < range.last.y; ++j) {
-    counts.push_back(GLsizei(6 * (range.last.x - range.first.x)));
-    offsets.push_back(
-        reinterpret_cast<const void*>(size_t(6 * (j * columns + range.first.x)) * sizeof(GLuint)));
+    for (int i = range.first.x; i < range.last.x; ++i) add_cell(grid_cells, columns, i, j);
   }
-  glBindVertexArray(grid_vao_.id());
-  glMultiDrawElements(GL_TRIANGLES, counts.data(), GL_UNSIGNED_INT, offsets.data(),
-                      GLsizei(counts.size()));
+  draw_cells(grid_indices_, grid_vao_, grid_cells);
   timer.end();
   timer.begin("own_rays");
   set_frame_uniforms(pixel_program_, frame);
