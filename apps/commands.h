@@ -21,6 +21,7 @@ void add_probe_atmosphere_commands(CLI::App& probe);
 void add_fly_command(CLI::App& app);
 // `planet techniques`: the registry of atmosphere techniques.
 void add_techniques_command(CLI::App& app);
+void add_lab_command(CLI::App& app);
 void add_probe_sun_command(CLI::App& probe);
 // `planet probe ground`: the terrain's height under a place.
 void add_probe_ground_command(CLI::App& probe);

@@ -62,6 +62,7 @@ int main(int argc, char** argv) {
   planet::apps::add_probe_atmosphere_commands(probe);
   planet::apps::add_fly_command(app);
   planet::apps::add_techniques_command(app);
+  planet::apps::add_lab_command(app);
   planet::apps::add_probe_sun_command(probe);
   planet::apps::add_probe_ground_command(probe);
   planet::apps::add_probe_oneil_command(probe);

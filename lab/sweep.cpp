@@ -1,0 +1,359 @@
+#include "lab/sweep.h"
+
+#include "atmosphere/gpu/registry.h"
+#include "core/atomic_file.h"
+#include "core/data_paths.h"
+#include "core/error.h"
+#include "core/tone_map.h"
+#include "core/version.h"
+#include "gl/texture.h"
+#include "lab/accuracy.h"
+#include "lab/color_difference.h"
+#include "lab/debiased_error.h"
+#include "lab/pareto.h"
+#include "lab/reference_cache.h"
+#include "render/frame.h"
+
+#include <epoxy/gl.h>
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <set>
+
+namespace planet {
+
+namespace {
+
+// What a reference gets when none of the view is cached and no budget is
+// given: as planet accuracy's.
+constexpr int kDefaultPaths = 4096;
+
+std::string cell_name(const std::string& technique, const std::string& quality) {
+  return technique + "-" + quality;
+}
+
+std::filesystem::path cell_file(const SweepOptions& o, const std::string& scene,
+                                const std::string& technique, const std::string& quality) {
+  return o.out / "cells" / scene / (cell_name(technique, quality) + ".json");
+}
+
+// The choice a quality point makes: "name" or "name:key=value,...".
+std::string choice_of(const std::string& technique, const std::string& quality) {
+  for (const auto& [name, settings] : technique_entry(technique).quality_points) {
+    if (name == quality) return settings.empty() ? technique : technique + ":" + settings;
+  }
+  return technique;
+}
+
+double median(std::vector<double> v) {
+  std::sort(v.begin(), v.end());
+  size_t n = v.size();
+  return n == 0 ? 0.0 : n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// The scene's camera at another image size (the same vertical field of view).
+Scene at_size(Scene scene, int width, int height) {
+  scene.width = width;
+  scene.height = height;
+  return scene;
+}
+
+// The commit of the source tree the program runs from, when it is a git
+// checkout.
+std::string source_commit() {
+  std::string command =
+      fmt::format("git -C '{}' describe --always --dirty 2>/dev/null", project_root().string());
+  std::string out;
+  if (FILE* pipe = popen(command.c_str(), "r")) {
+    char buffer[128];
+    while (fgets(buffer, sizeof buffer, pipe)) out += buffer;
+    pclose(pipe);
+  }
+  while (!out.empty() && (out.back() == '\n' || out.back() == '\r')) out.pop_back();
+  return out.empty() ? "not a git checkout" : out;
+}
+
+// Times the cell's frames at the display size: the atmosphere's passes,
+// synchronous, summed per frame.
+void time_cell(const Scene& scene, const std::string& choice, int frames, SweepCell& cell) {
+  Body body = scene_body(scene);
+  AtmosphereModel model = scene_atmosphere(scene, body);
+  FrameRenderer renderer(scene.width, scene.height);
+  renderer.set_synchronous_timing(true);
+  renderer.set_body(body, model, make_technique(choice));
+  renderer.render(scene.camera, scene.sun_dir_body, scene.exposure);  // warm-up
+  std::vector<double> walls, gpus;
+  std::map<std::string, std::vector<double>> passes;
+  for (int i = 0; i < frames; ++i) {
+    double wall = 0, gpu = 0;
+    for (const PassTiming& p : renderer.render(scene.camera, scene.sun_dir_body, scene.exposure).passes) {
+      if (p.pass == "surface" || p.pass == "tonemap") continue;
+      wall += p.wall_ms;
+      gpu += p.gpu_ms;
+      passes[p.pass].push_back(p.wall_ms);
+    }
+    walls.push_back(wall);
+    gpus.push_back(gpu);
+  }
+  cell.wall_ms = median(walls);
+  cell.wall_spread_ms = walls.empty() ? 0.0
+                                      : *std::max_element(walls.begin(), walls.end()) -
+                                            *std::min_element(walls.begin(), walls.end());
+  cell.gpu_ms = median(gpus);
+  for (auto& [pass, ms] : passes) cell.pass_wall_ms[pass] = median(ms);
+}
+
+struct SceneTruth {
+  ImageRGB image, noise;
+  std::vector<uint8_t> sun_mask;
+  std::vector<uint8_t> reference_rgb8;
+};
+
+void measure_cell(const Scene& scene, const std::string& choice, const SceneTruth& truth,
+                  const std::filesystem::path& image_stem, SweepCell& cell) {
+  Body body = scene_body(scene);
+  AtmosphereModel model = scene_atmosphere(scene, body);
+  FrameRenderer renderer(scene.width, scene.height);
+  renderer.set_body(body, model, make_technique(choice));
+  renderer.render(scene.camera, scene.sun_dir_body, scene.exposure);
+  ImageRGB image = image_from_gl(scene.width, scene.height, renderer.read_hdr());
+  TechniqueAccuracy accuracy = measure_accuracy(scene, image, truth.image);
+  std::array<DebiasedError, 3> e = debiased_error(image, truth.image, truth.noise, truth.sun_mask);
+  for (size_t c = 0; c < 3; ++c) {
+    cell.relative_rmse[c] = accuracy.channels[c].relative();
+    cell.debiased[c] = e[c].relative(e[c].debiased_rmse);
+    cell.debiased_low[c] = e[c].relative(e[c].low);
+    cell.debiased_high[c] = e[c].relative(e[c].high);
+  }
+  cell.worst_pixel = 0;
+  for (size_t i = 0; i < truth.sun_mask.size(); ++i) {
+    if (truth.sun_mask[i]) continue;
+    for (size_t c = 0; c < 3; ++c) {
+      cell.worst_pixel =
+          std::max(cell.worst_pixel, double(std::abs(accuracy.signed_error.pixels[i * 3 + c])));
+    }
+  }
+  cell.ciede2000 = mean_ciede2000(tone_mapped_rgb8(image, scene.exposure), truth.reference_rgb8,
+                                  truth.sun_mask);
+  // The images a person looks at: the technique's and its error.
+  write_tone_mapped_png(image_stem.string() + "_technique.png", enlarged(image), scene.exposure);
+  ImageRGB error = accuracy.signed_error;
+  for (float& v : error.pixels) v = std::abs(v);
+  write_tone_mapped_png(image_stem.string() + "_error.png", enlarged(error), 5.0);
+}
+
+// The geometric mean of positive values (0 where any is not).
+double geometric_mean(const std::vector<double>& v) {
+  double log_sum = 0;
+  for (double x : v) {
+    if (!(x > 0)) return 0.0;
+    log_sum += std::log(x);
+  }
+  return v.empty() ? 0.0 : std::exp(log_sum / double(v.size()));
+}
+
+}  // namespace
+
+double SweepCell::error() const {
+  return std::max({debiased[0], debiased[1], debiased[2]});
+}
+
+SweepPlan plan_sweep(const SweepOptions& o) {
+  if (o.frames < 1 || o.frames > 1000) {
+    throw InputError(fmt::format("lab run --frames: {} is not 1 to 1000", o.frames));
+  }
+  SweepPlan plan;
+  std::vector<std::string> techniques = o.techniques.empty() ? technique_names() : o.techniques;
+  std::set<std::string> qualities_used;
+  for (const std::string& t : techniques) {
+    const TechniqueEntry& entry = technique_entry(t);  // InputError naming the known ones
+    std::vector<std::string> names;
+    for (const auto& point : entry.quality_points) names.push_back(point.first);
+    if (names.empty()) names.push_back("default");
+    for (const std::string& q : names) {
+      bool wanted = o.qualities.empty() ||
+                    std::find(o.qualities.begin(), o.qualities.end(), q) != o.qualities.end();
+      if (!wanted) continue;
+      plan.points.emplace_back(t, q);
+      qualities_used.insert(q);
+    }
+  }
+  for (const std::string& q : o.qualities) {
+    if (!qualities_used.count(q)) {
+      throw InputError(fmt::format(
+          "lab run --quality: no technique of the sweep has a quality point '{}' (planet "
+          "techniques lists them)",
+          q));
+    }
+  }
+  if (o.scenes.empty()) {
+    for (const Scene& s : canonical_scenes()) {
+      if (scene_body(s).has_atmosphere()) plan.scenes.push_back(at_size(s, o.width, o.height));
+    }
+  } else {
+    for (const std::string& name : o.scenes) {
+      Scene s = at_size(find_scene(name), o.width, o.height);
+      scene_atmosphere(s, scene_body(s));  // an airless scene fails here
+      plan.scenes.push_back(s);
+    }
+  }
+  return plan;
+}
+
+nlohmann::json cell_to_json(const SweepCell& c) {
+  return {{"scene", c.scene},
+          {"technique", c.technique},
+          {"quality", c.quality},
+          {"choice", c.choice},
+          {"wall_ms", c.wall_ms},
+          {"wall_spread_ms", c.wall_spread_ms},
+          {"gpu_ms", c.gpu_ms},
+          {"pass_wall_ms", c.pass_wall_ms},
+          {"relative_rmse", c.relative_rmse},
+          {"debiased_relative_rmse", c.debiased},
+          {"debiased_low", c.debiased_low},
+          {"debiased_high", c.debiased_high},
+          {"worst_pixel", c.worst_pixel},
+          {"ciede2000", c.ciede2000},
+          {"error", c.error()},
+          {"on_front", c.on_front}};
+}
+
+SweepCell cell_from_json(const nlohmann::json& j, const std::string& file) {
+  try {
+    SweepCell c;
+    c.scene = j.at("scene").get<std::string>();
+    c.technique = j.at("technique").get<std::string>();
+    c.quality = j.at("quality").get<std::string>();
+    c.choice = j.at("choice").get<std::string>();
+    c.wall_ms = j.at("wall_ms").get<double>();
+    c.wall_spread_ms = j.at("wall_spread_ms").get<double>();
+    c.gpu_ms = j.at("gpu_ms").get<double>();
+    c.pass_wall_ms = j.at("pass_wall_ms").get<std::map<std::string, double>>();
+    c.relative_rmse = j.at("relative_rmse").get<std::array<double, 3>>();
+    c.debiased = j.at("debiased_relative_rmse").get<std::array<double, 3>>();
+    c.debiased_low = j.at("debiased_low").get<std::array<double, 3>>();
+    c.debiased_high = j.at("debiased_high").get<std::array<double, 3>>();
+    c.worst_pixel = j.at("worst_pixel").get<double>();
+    c.ciede2000 = j.at("ciede2000").get<double>();
+    return c;
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(fmt::format("{}: not a cell of planet lab run ({}); delete it or run with "
+                                 "--redo",
+                                 file, e.what()));
+  }
+}
+
+std::vector<SweepCell> run_sweep(const SweepOptions& o, const SweepPlan& plan,
+                                 const std::function<void(int, int, const std::string&)>& progress) {
+  const int total = int(plan.scenes.size() * plan.points.size());
+  int done = 0;
+  std::vector<SweepCell> cells;
+  for (const Scene& scene : plan.scenes) {
+    // The ground truth once per scene: the best cached or shipped, else
+    // rendered (the command has said what that costs).
+    std::optional<PathBudget> cached = best_cached_budget(scene, ReferenceMode::kRgb);
+    PathBudget budget = o.paths ? *o.paths : cached ? *cached : PathBudget(kDefaultPaths);
+    ReferenceRender reference = reference_render(scene, budget, ReferenceMode::kRgb);
+    SceneTruth truth{reference.image, reference.noise, sun_disk_mask(scene), {}};
+    truth.reference_rgb8 = tone_mapped_rgb8(truth.image, scene.exposure);
+    std::filesystem::path dir = o.out / "cells" / scene.name;
+    std::filesystem::create_directories(dir);
+    write_tone_mapped_png(dir / "reference.png", enlarged(truth.image), scene.exposure);
+    for (const auto& [technique, quality] : plan.points) {
+      std::filesystem::path file = cell_file(o, scene.name, technique, quality);
+      std::string label = fmt::format("{} {}:{}", scene.name, technique, quality);
+      if (progress) progress(done, total, label);
+      SweepCell cell;
+      if (!o.redo && std::filesystem::exists(file)) {
+        std::ifstream in(file);
+        nlohmann::json j;
+        try {
+          in >> j;
+        } catch (const nlohmann::json::exception& e) {
+          throw InputError(fmt::format("{}: not a cell of planet lab run ({}); delete it or run "
+                                       "with --redo",
+                                       file.string(), e.what()));
+        }
+        cell = cell_from_json(j, file.string());
+        cell.kept = true;
+      } else {
+        cell.scene = scene.name;
+        cell.technique = technique;
+        cell.quality = quality;
+        cell.choice = choice_of(technique, quality);
+        time_cell(at_size(scene, o.time_width, o.time_height), cell.choice, o.frames, cell);
+        measure_cell(scene, cell.choice, truth, dir / cell_name(technique, quality), cell);
+        // Whole or not at all: a killed sweep never leaves half a cell.
+        write_file_atomically(file, cell_to_json(cell).dump(2) + "\n");
+      }
+      cells.push_back(cell);
+      ++done;
+    }
+  }
+  if (progress) progress(done, total, "");
+
+  // The fronts: per scene, and over the scenes' geometric means.
+  std::map<std::string, std::vector<size_t>> by_scene;
+  for (size_t i = 0; i < cells.size(); ++i) by_scene[cells[i].scene].push_back(i);
+  for (auto& [scene, indices] : by_scene) {
+    std::vector<CostError> points;
+    for (size_t i : indices) points.push_back({cells[i].wall_ms, cells[i].error()});
+    std::vector<bool> on = pareto_front(points);
+    for (size_t k = 0; k < indices.size(); ++k) cells[indices[k]].on_front = on[k];
+  }
+  nlohmann::json overall = nlohmann::json::array();
+  std::vector<CostError> overall_points;
+  for (const auto& [technique, quality] : plan.points) {
+    std::vector<double> times, errors;
+    for (const SweepCell& c : cells) {
+      if (c.technique == technique && c.quality == quality) {
+        times.push_back(c.wall_ms);
+        errors.push_back(c.error());
+      }
+    }
+    overall_points.push_back({geometric_mean(times), geometric_mean(errors)});
+    overall.push_back({{"technique", technique},
+                       {"quality", quality},
+                       {"choice", choice_of(technique, quality)},
+                       {"wall_ms", overall_points.back().cost},
+                       {"error", overall_points.back().error}});
+  }
+  std::vector<bool> overall_on = pareto_front(overall_points);
+  for (size_t i = 0; i < overall.size(); ++i) overall[i]["on_front"] = bool(overall_on[i]);
+
+  nlohmann::json results = {
+      {"planet", planet_version()},
+      {"commit", source_commit()},
+      {"renderer", reinterpret_cast<const char*>(glGetString(GL_RENDERER))},
+      {"time_size", {o.time_width, o.time_height}},
+      {"accuracy_size", {o.width, o.height}},
+      {"frames", o.frames},
+      {"cost", "wall_ms: the atmosphere's passes per frame, synchronous, median of the frames"},
+      {"error", "the worst channel's relative RMSE against the ground truth, its noise taken out"},
+      {"cells", nlohmann::json::array()},
+      {"overall", overall}};
+  for (const SweepCell& c : cells) results["cells"].push_back(cell_to_json(c));
+  write_file_atomically(o.out / "results.json", results.dump(2) + "\n");
+
+  std::string csv =
+      "scene,technique,quality,choice,wall_ms,wall_spread_ms,gpu_ms,rel_rmse_r,rel_rmse_g,"
+      "rel_rmse_b,debiased_r,debiased_g,debiased_b,debiased_low_r,debiased_low_g,debiased_low_b,"
+      "debiased_high_r,debiased_high_g,debiased_high_b,worst_pixel,ciede2000,error,on_front\n";
+  for (const SweepCell& c : cells) {
+    csv += fmt::format("{},{},{},\"{}\",{:.4f},{:.4f},{:.4f}", c.scene, c.technique, c.quality,
+                       c.choice, c.wall_ms, c.wall_spread_ms, c.gpu_ms);
+    for (const auto* v : {&c.relative_rmse, &c.debiased, &c.debiased_low, &c.debiased_high}) {
+      for (double x : *v) csv += fmt::format(",{:.6f}", x);
+    }
+    csv += fmt::format(",{:.6f},{:.4f},{:.6f},{}\n", c.worst_pixel, c.ciede2000, c.error(),
+                       c.on_front ? 1 : 0);
+  }
+  write_file_atomically(o.out / "results.csv", csv);
+  return cells;
+}
+
+}  // namespace planet

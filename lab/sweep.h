@@ -1,0 +1,67 @@
+#pragma once
+// The lab's sweep: every (technique, quality point, canonical scene) cell
+// timed on the scene's view at a display size and measured against the
+// scene's ground truth at the reference's size, with the reference's noise
+// taken out (debiased_error.h). Cells are kept one file each as they
+// finish, so that a sweep stopped part-way goes on where it stopped; the
+// fronts and tables are made from whatever cells are there.
+#include <nlohmann/json.hpp>
+#include "lab/scene.h"
+
+#include <array>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace planet {
+
+struct SweepOptions {
+  std::vector<std::string> techniques;  // registry names; empty: every one
+  std::vector<std::string> qualities;   // quality point names; empty: every one
+  std::vector<std::string> scenes;      // canonical scenes; empty: those with air
+  std::filesystem::path out = "out/lab";
+  int frames = 5;                       // timed after one untimed frame
+  int time_width = 640, time_height = 360;
+  int width = 32, height = 16;          // accuracy: the shipped references' size
+  std::optional<PathBudget> paths;      // references not cached: this budget
+  bool redo = false;                    // time and measure finished cells again
+};
+
+struct SweepCell {
+  std::string scene, technique, quality, choice;  // choice: "name:key=value,..."
+  double wall_ms = 0, wall_spread_ms = 0;  // median and max - min of the frames' sums
+  double gpu_ms = 0;                       // timer queries' median sum
+  std::map<std::string, double> pass_wall_ms;
+  std::array<double, 3> relative_rmse{};   // plain, reference noise included
+  std::array<double, 3> debiased{};        // the reference's noise taken out
+  std::array<double, 3> debiased_low{}, debiased_high{};  // 95 % intervals
+  double worst_pixel = 0;                  // largest |t - r| / mean reference, any channel
+  double ciede2000 = 0;                    // mean, tone-mapped images
+  double error() const;                    // the worst channel's debiased relative RMSE
+  bool on_front = false;                   // of its scene
+  bool kept = false;                       // read from an earlier run, not timed now
+};
+
+// The sweep's cells, in order: scenes, then techniques, then quality points.
+struct SweepPlan {
+  std::vector<Scene> scenes;  // at the accuracy size
+  std::vector<std::pair<std::string, std::string>> points;  // technique, quality
+};
+
+// Checks every name and the output folder (InputError) before any work.
+SweepPlan plan_sweep(const SweepOptions& options);
+
+// Runs the cells not yet done (all with redo), then writes results.json,
+// results.csv and the cells' images under options.out. Needs a GL context.
+// `progress` sees (cells done, cells in all, the cell now).
+std::vector<SweepCell> run_sweep(const SweepOptions& options, const SweepPlan& plan,
+                                 const std::function<void(int, int, const std::string&)>& progress);
+
+nlohmann::json cell_to_json(const SweepCell& cell);
+// InputError naming `file` for a cell file this program did not write.
+SweepCell cell_from_json(const nlohmann::json& json, const std::string& file);
+
+}  // namespace planet

@@ -1,0 +1,200 @@
+#!/usr/bin/env python3
+"""The lab's charts and report, from a sweep's results.json (planet lab run).
+
+    python3 scripts/lab_report.py OUT
+
+Writes OUT/pareto_overall.{png,svg} and OUT/pareto_<scene>.{png,svg}: time
+per frame on a log x axis, error on a log y axis, a marker per (technique,
+quality), the Pareto front as a line; and OUT/report.html, one page with
+everything in it (the charts and images inline, no network): the charts,
+a sentence per scene naming the cheapest technique within 1, 2 and 5 %, the
+table of cells, and the technique / ground truth / error images of every
+point on a front.
+"""
+import base64
+import html
+import json
+import math
+import os
+import sys
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+from matplotlib.ticker import FuncFormatter  # noqa: E402
+
+MARKERS = "osD^v<>ph*"
+FLOOR = 1e-4  # errors below this are drawn at it (a log axis has no 0)
+
+
+def load(out):
+    path = os.path.join(out, "results.json")
+    try:
+        with open(path, encoding="utf-8") as f:
+            results = json.load(f)
+    except (OSError, ValueError) as e:
+        sys.exit(f"lab_report: {path}: {e}")
+    for key in ("cells", "overall"):
+        if key not in results:
+            sys.exit(f"lab_report: {path}: no '{key}': not the results of planet lab run")
+    return results
+
+
+def styles(points):
+    """A colour per technique, a marker per quality point within it."""
+    techniques = sorted({p["technique"] for p in points})
+    colours = plt.get_cmap("tab10")
+    style = {}
+    for t_index, technique in enumerate(techniques):
+        qualities = [p["quality"] for p in points if p["technique"] == technique]
+        for q_index, quality in enumerate(dict.fromkeys(qualities)):
+            style[(technique, quality)] = (colours(t_index % 10), MARKERS[q_index % len(MARKERS)])
+    return style
+
+
+def chart(points, title, stem, style):
+    fig, ax = plt.subplots(figsize=(7.5, 4.8), dpi=100)
+    for p in points:
+        colour, marker = style[(p["technique"], p["quality"])]
+        ax.scatter(p["wall_ms"], max(p["error"], FLOOR), color=colour, marker=marker, s=46,
+                   label=f'{p["technique"]}:{p["quality"]}', zorder=3,
+                   edgecolors="black" if p["on_front"] else "none")
+    front = sorted((p for p in points if p["on_front"]), key=lambda p: p["wall_ms"])
+    if front:
+        # A staircase: from each point on the front, its error holds until
+        # a dearer point does better.
+        ax.plot([p["wall_ms"] for p in front], [max(p["error"], FLOOR) for p in front],
+                color="black", linewidth=1.2, zorder=2, drawstyle="steps-post",
+                label="Pareto front")
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    # Plain numbers (ms, %) on the ticks; the minor ones labelled too where
+    # the points span less than a decade (no major tick in the range).
+    label_ms = FuncFormatter(lambda v, _: f"{v:.3g}")
+    label_error = FuncFormatter(lambda v, _: f"{100 * v:.3g} %")
+    blank = FuncFormatter(lambda v, _: "")
+    ms = [p["wall_ms"] for p in points]
+    errors = [max(p["error"], FLOOR) for p in points]
+    ax.xaxis.set_major_formatter(label_ms)
+    ax.yaxis.set_major_formatter(label_error)
+    ax.xaxis.set_minor_formatter(label_ms if max(ms) < 10 * min(ms) else blank)
+    ax.yaxis.set_minor_formatter(label_error if max(errors) < 10 * min(errors) else blank)
+    ax.tick_params(axis="both", which="minor", labelsize=7)
+    ax.set_xlabel("time per frame, ms (the atmosphere's passes)")
+    ax.set_ylabel("error (worst channel's relative RMSE)")
+    ax.set_title(title)
+    ax.grid(True, which="both", linewidth=0.3, alpha=0.5)
+    ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5), frameon=False)
+    fig.tight_layout()
+    fig.savefig(stem + ".png")
+    fig.savefig(stem + ".svg")
+    plt.close(fig)
+
+
+def inline_png(path):
+    try:
+        with open(path, "rb") as f:
+            data = base64.b64encode(f.read()).decode("ascii")
+    except OSError:
+        return '<span class="missing">missing</span>'
+    return f'<img src="data:image/png;base64,{data}" alt="{html.escape(os.path.basename(path))}">'
+
+
+def cheapest_within(cells, budget):
+    fitting = [c for c in cells if c["error"] <= budget]
+    if not fitting:
+        return None
+    return min(fitting, key=lambda c: c["wall_ms"])
+
+
+def percent(x):
+    return f"{100 * x:.2f}"
+
+
+def main():
+    if len(sys.argv) != 2:
+        sys.exit("usage: lab_report.py OUT (the folder of planet lab run's results.json)")
+    out = sys.argv[1]
+    results = load(out)
+    cells = results["cells"]
+    scenes = list(dict.fromkeys(c["scene"] for c in cells))
+    style = styles(cells)
+    chart(results["overall"], "All scenes (geometric means)", os.path.join(out, "pareto_overall"),
+          style)
+    for scene in scenes:
+        chart([c for c in cells if c["scene"] == scene], scene,
+              os.path.join(out, f"pareto_{scene}"), style)
+
+    e = html.escape
+    parts = [
+        "<!DOCTYPE html><html lang=\"en\"><head><meta charset=\"utf-8\">",
+        "<title>planet lab: speed against accuracy</title><style>",
+        "body{font-family:sans-serif;margin:1.5em;max-width:1200px}",
+        "table{border-collapse:collapse;font-size:12px}td,th{border:1px solid #ccc;",
+        "padding:2px 6px;text-align:right}td.l,th.l{text-align:left}tr.front{background:#eef6ff}",
+        ".triplet img{width:256px;image-rendering:pixelated;margin-right:4px}",
+        ".chart img{max-width:100%}.missing{color:#a00}</style></head><body>",
+        "<h1>Speed against accuracy</h1>",
+        f"<p>planet {e(str(results.get('planet', '')))}, commit {e(str(results.get('commit', '')))}, "
+        f"on {e(str(results.get('renderer', '')))}. Cells timed at "
+        f"{e('x'.join(map(str, results.get('time_size', []))))} ({results.get('frames', '')} "
+        f"frames after one untimed; {e(str(results.get('cost', '')))}), measured at "
+        f"{e('x'.join(map(str, results.get('accuracy_size', []))))} against the path-traced "
+        f"ground truth ({e(str(results.get('error', '')))}).</p>",
+        "<h2>All scenes</h2>",
+        f'<div class="chart" id="chart-overall">{inline_png(os.path.join(out, "pareto_overall.png"))}</div>',
+    ]
+    front = [p for p in results["overall"] if p["on_front"]]
+    parts.append("<p>On the overall front, from the cheapest: " + ", ".join(
+        f'{e(p["technique"])}:{e(p["quality"])} ({p["wall_ms"]:.3g} ms, {percent(p["error"])} %)'
+        for p in sorted(front, key=lambda p: p["wall_ms"])) + ".</p>")
+    for scene in scenes:
+        here = [c for c in cells if c["scene"] == scene]
+        parts.append(f"<h2>{e(scene)}</h2>")
+        sentences = []
+        for budget in (0.01, 0.02, 0.05):
+            c = cheapest_within(here, budget)
+            sentences.append(
+                f"within {100 * budget:g} %: {e(c['technique'])}:{e(c['quality'])} "
+                f"({c['wall_ms']:.3g} ms, {percent(c['error'])} %)" if c else
+                f"within {100 * budget:g} %: none")
+        parts.append("<p>Cheapest " + "; ".join(sentences) + ".</p>")
+        parts.append(f'<div class="chart">{inline_png(os.path.join(out, f"pareto_{scene}.png"))}</div>')
+        for c in sorted((c for c in here if c["on_front"]), key=lambda c: c["wall_ms"]):
+            stem = os.path.join(out, "cells", scene, f'{c["technique"]}-{c["quality"]}')
+            parts.append(
+                f'<p class="triplet">{e(c["technique"])}:{e(c["quality"])}, '
+                f'{c["wall_ms"]:.3g} ms, {percent(c["error"])} %<br>'
+                f'{inline_png(stem + "_technique.png")}'
+                f'{inline_png(os.path.join(out, "cells", scene, "reference.png"))}'
+                f'{inline_png(stem + "_error.png")}</p>')
+    parts.append("<h2>Every cell</h2><p>Relative RMSE per channel in %, R / G / B: plain (the "
+                 "reference's noise in it) and debiased with its 95 % interval; the worst "
+                 "pixel's relative error; the mean CIEDE2000 of the tone-mapped images. Rows "
+                 "on their scene's front are shaded.</p>")
+    parts.append('<table id="cells"><thead><tr><th class="l">scene</th><th class="l">technique'
+                 '</th><th class="l">quality</th><th>ms</th><th>spread ms</th><th>plain %</th>'
+                 '<th>debiased % [95 %]</th><th>worst pixel %</th><th>CIEDE2000</th></tr></thead>'
+                 '<tbody>')
+    for c in cells:
+        debiased = " / ".join(
+            f"{percent(v)} [{percent(lo)}, {percent(hi)}]"
+            for v, lo, hi in zip(c["debiased_relative_rmse"], c["debiased_low"],
+                                 c["debiased_high"]))
+        parts.append(
+            f'<tr class="{"front" if c["on_front"] else ""}"><td class="l">{e(c["scene"])}</td>'
+            f'<td class="l">{e(c["technique"])}</td><td class="l">{e(c["quality"])}</td>'
+            f'<td>{c["wall_ms"]:.3g}</td><td>{c["wall_spread_ms"]:.2g}</td>'
+            f'<td>{" / ".join(percent(v) for v in c["relative_rmse"])}</td><td>{debiased}</td>'
+            f'<td>{percent(c["worst_pixel"])}</td><td>{c["ciede2000"]:.2f}</td></tr>')
+    parts.append("</tbody></table></body></html>")
+    path = os.path.join(out, "report.html")
+    with open(path + ".part", "w", encoding="utf-8") as f:
+        f.write("\n".join(parts))
+    os.replace(path + ".part", path)
+    print(f"lab: wrote {path} and {len(scenes) + 1} charts (pareto_*.png, .svg)")
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,78 @@
+#!/usr/bin/env bash
+# A tiny sweep (two techniques, two quality points, two scenes at 16x8):
+# its tables, charts and report; a second run goes on from the kept cells
+# without timing them again; a real browser (Debian's headless chromium)
+# opens the report, which must render (a chart that is not blank, one table
+# row per cell) with no console errors. Exit 77 (skipped) without
+# matplotlib or chromium.
+set -uo pipefail
+planet="$1"; work="$2"
+# The python that sees Debian's matplotlib (one of one's own on the PATH may not).
+python=""
+for p in python3 /usr/bin/python3; do
+  "$p" -c 'import matplotlib' 2> /dev/null && { python="$p"; break; }
+done
+[ -n "$python" ] ||
+  { echo "SKIPPED: python3-matplotlib is not installed (scripts/install-deps.sh installs it)"; exit 77; }
+browser=$(command -v chromium || command -v chromium-browser || true)
+[ -n "$browser" ] ||
+  { echo "SKIPPED: chromium is not installed (scripts/install-deps.sh installs it)"; exit 77; }
+rm -rf "$work"; mkdir -p "$work"
+export PLANET_CACHE_DIR="$work/cache"
+failed=0
+fail() { echo "FAIL: $*"; failed=1; }
+sweep() {
+  "$planet" lab run --techniques raymarch oneil --quality cheap default \
+    --scenes earth_noon mars_noon --width 16 --height 8 --time-width 64 --time-height 32 \
+    --frames 2 --spp 256 --out "$work/lab" --quiet
+}
+sweep > "$work/first.txt" 2>&1 || fail "the sweep failed: $(cat "$work/first.txt")"
+grep -q "8 cells (8 timed now, 0 kept from before)" "$work/first.txt" ||
+  fail "the first sweep did not time 8 cells: $(cat "$work/first.txt")"
+rows=$(($(wc -l < "$work/lab/results.csv") - 1))
+[ "$rows" -eq 8 ] || fail "results.csv has $rows rows, not 8"
+for f in results.json report.html pareto_overall.png pareto_overall.svg pareto_earth_noon.png \
+         pareto_mars_noon.svg cells/earth_noon/reference.png cells/mars_noon/oneil-cheap_error.png; do
+  [ -s "$work/lab/$f" ] || fail "no $f"
+done
+"$python" - "$work/lab/results.json" << 'PY' || fail "results.json does not hold the cells' figures"
+import json, sys
+r = json.load(open(sys.argv[1]))
+cells = r["cells"]
+assert len(cells) == 8, len(cells)
+assert all(c["wall_ms"] > 0 and all(x >= 0 for x in c["debiased_relative_rmse"]) for c in cells)
+assert all(c["debiased_low"][k] <= c["debiased_relative_rmse"][k] <= c["debiased_high"][k]
+           for c in cells for k in range(3))
+# raymarch is single scattering: tens of percent from the ground truth at noon
+assert all(c["error"] > 0.1 for c in cells if c["technique"] == "raymarch"), cells
+assert any(c["on_front"] for c in cells if c["scene"] == "earth_noon")
+assert len(r["overall"]) == 4 and r["renderer"] and r["commit"]
+PY
+# Again: every cell kept, none timed, the same tables.
+cp "$work/lab/results.csv" "$work/first.csv"
+sweep > "$work/second.txt" 2>&1 || fail "the second sweep failed: $(cat "$work/second.txt")"
+grep -q "8 cells (0 timed now, 8 kept from before)" "$work/second.txt" ||
+  fail "the second sweep timed cells again: $(cat "$work/second.txt")"
+cmp -s "$work/first.csv" "$work/lab/results.csv" || fail "the kept cells gave other tables"
+# The report in a real browser.
+"$browser" --headless --no-sandbox --disable-gpu --hide-scrollbars --window-size=1000,900 \
+  --enable-logging=stderr --v=0 --screenshot="$work/shot.png" "file://$work/lab/report.html" \
+  > "$work/browser.txt" 2>&1 || fail "chromium failed: $(tail -5 "$work/browser.txt")"
+"$browser" --headless --no-sandbox --disable-gpu --dump-dom "file://$work/lab/report.html" \
+  > "$work/dom.html" 2> /dev/null || fail "chromium could not dump the page"
+grep -qi "CONSOLE" "$work/browser.txt" && fail "console messages: $(grep -i CONSOLE "$work/browser.txt")"
+"$python" - "$work/shot.png" "$work/dom.html" << 'PY' || fail "the report did not render"
+import re, sys
+import matplotlib.image as mpimg
+shot = mpimg.imread(sys.argv[1])
+# The overall chart sits near the top: its area must hold marks, not a blank page.
+area = shot[100:600, 0:800, :3]
+dark = (area.sum(axis=2) < 1.5).mean()
+assert 0.002 < dark < 0.5, f"chart area dark fraction {dark}"
+dom = open(sys.argv[2], encoding="utf-8").read()
+body = dom.split('<table id="cells">', 1)[1].split("</tbody>", 1)[0]
+rows = len(re.findall(r"<tr class=", body))
+assert rows == 8, f"{rows} table rows"
+PY
+[ "$failed" -eq 0 ] && echo "ok: 8 cells, charts and a report that renders; the second run kept every cell"
+exit $failed
