@@ -71,7 +71,7 @@ def chart(points, title, stem, style):
     ax.set_yscale("log")
     # Plain numbers (ms, %) on the ticks; the minor ones labelled too where
     # the points span less than a decade (no major tick in the range).
-    label_ms = FuncFormatter(lambda v, _: f"{v:.3g}")
+    label_ms = FuncFormatter(lambda v, _: f"{v:.4g}")
     label_error = FuncFormatter(lambda v, _: f"{100 * v:.3g} %")
     blank = FuncFormatter(lambda v, _: "")
     ms = [p["wall_ms"] for p in points]
