@@ -3,8 +3,8 @@
 # its tables, charts and report; a second run goes on from the kept cells
 # without timing them again; a real browser (Debian's headless chromium)
 # opens the report, which must render (a chart that is not blank, one table
-# row per cell) with no console errors. Exit 77 (skipped) without
-# matplotlib or chromium.
+# row per cell) with no console errors; bad input is refused in one line
+# before any work. Exit 77 (skipped) without matplotlib or chromium.
 set -uo pipefail
 planet="$1"; work="$2"
 # The python that sees Debian's matplotlib (one of one's own on the PATH may not).
@@ -19,8 +19,17 @@ browser=$(command -v chromium || command -v chromium-browser || true)
   { echo "SKIPPED: chromium is not installed (scripts/install-deps.sh installs it)"; exit 77; }
 rm -rf "$work"; mkdir -p "$work"
 export PLANET_CACHE_DIR="$work/cache"
-failed=0
+source "$(dirname "$0")/expect_refusal.sh"  # expect(), failed=0
 fail() { echo "FAIL: $*"; failed=1; }
+# Bad input: one line and exit 2, before any work, and nothing written.
+expect "unknown atmosphere technique 'nope'" "$planet" lab run --techniques nope --out "$work/x"
+expect "no technique of the sweep has a quality point 'nope'" \
+  "$planet" lab run --quality nope --out "$work/x"
+expect "'nope' is not a canonical scene" "$planet" lab run --scenes nope --out "$work/x"
+expect "lab run --frames: 0 is not 1 to 1000" "$planet" lab run --frames 0 --out "$work/x"
+touch "$work/a_file"
+expect "is a file" "$planet" lab run --scenes earth_noon --out "$work/a_file"
+[ -e "$work/x" ] && fail "a refused sweep left $work/x"
 sweep() {
   "$planet" lab run --techniques raymarch oneil --quality cheap default \
     --scenes earth_noon mars_noon --width 16 --height 8 --time-width 64 --time-height 32 \
