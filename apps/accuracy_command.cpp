@@ -4,6 +4,7 @@
 // relative RMSE over the open sky alone, and the mean signed error (bias);
 // the images are written where a person can look at them.
 #include "apps/commands.h"
+#include "apps/reference_progress.h"
 #include "atmosphere/gpu/registry.h"
 #include "core/error.h"
 #include "core/interrupt.h"
@@ -82,29 +83,7 @@ void run_accuracy(const AccuracyArgs& args) {
   for (size_t k = 0; k < scenes.size(); ++k) {
     const Scene& scene = scenes[k];
     const PathBudget& budget = budgets[k];
-    if (!reference_cached(scene, budget, ReferenceMode::kRgb) && !args.quiet) {
-      RenderCost cost = estimate_reference_cost(scene, budget, ReferenceMode::kRgb);
-      std::fprintf(stderr, "planet: %s\n",
-                   describe_uncached_reference(scene, budget, ReferenceMode::kRgb, cost).c_str());
-    }
-    double paths = double(scene.width) * scene.height * budget.spp;
-    Progress progress("reference " + scene.name, paths, "path", args.quiet);
-    bool first = true;
-    auto on_progress = [&](double done) {
-      if (first) progress.begin_at(done * paths);
-      first = false;
-      progress.update(done * paths);
-    };
-    ReferenceRender ground_truth;
-    try {
-      ground_truth = reference_render(scene, budget, ReferenceMode::kRgb, on_progress,
-                                      &InterruptScope::flag());
-    } catch (const ReferenceInterrupted& e) {
-      progress.finish();
-      std::fprintf(stderr, "planet: %s\n", e.what());
-      std::exit(kInterruptedExitStatus);
-    }
-    progress.finish();
+    ReferenceRender ground_truth = reference_for_command(scene, budget, args.quiet);
     const ImageRGB& reference = ground_truth.image;
     ImageRGB technique = render_scene_with(scene, args.technique);
     TechniqueAccuracy accuracy = measure_accuracy(scene, technique, reference);

@@ -2,6 +2,7 @@
 // scenes (lab/sweep.h), its tables, and the charts and report drawn from
 // them by scripts/lab_report.py.
 #include "apps/commands.h"
+#include "apps/reference_progress.h"
 #include "core/data_paths.h"
 #include "core/error.h"
 #include "core/interrupt.h"
@@ -54,22 +55,7 @@ void ensure_references(const SweepPlan& plan, const LabArgs& args) {
     PathBudget budget = args.options.paths ? *args.options.paths
                         : cached           ? *cached
                                            : PathBudget(4096);
-    if (reference_cached(scene, budget, ReferenceMode::kRgb)) continue;
-    RenderCost cost = estimate_reference_cost(scene, budget, ReferenceMode::kRgb);
-    std::fprintf(stderr, "planet: %s\n",
-                 describe_uncached_reference(scene, budget, ReferenceMode::kRgb, cost).c_str());
-    double paths = double(scene.width) * scene.height * budget.spp;
-    Progress progress("reference " + scene.name, paths, "path", args.quiet);
-    try {
-      reference_render(scene, budget, ReferenceMode::kRgb,
-                       [&](double done) { progress.update(done * paths); },
-                       &InterruptScope::flag());
-    } catch (const ReferenceInterrupted& e) {
-      progress.finish();
-      std::fprintf(stderr, "planet: %s\n", e.what());
-      std::exit(kInterruptedExitStatus);
-    }
-    progress.finish();
+    reference_for_command(scene, budget, args.quiet);
   }
 }
 
