@@ -195,10 +195,7 @@ ReferenceRender reference_render(const Scene& scene, const PathBudget& paths, Re
   std::string view_key = reference_view_key(scene, model, mode);
   std::filesystem::path sums_file = reference_sums_file(file);
   std::filesystem::create_directories(file.parent_path());
-  ReferenceSettings settings;
-  settings.paths = paths;
-  settings.seed = scene.seed();
-  settings.trace.max_order = scene.max_order;
+  ReferenceSettings settings = reference_settings(scene, paths);
   settings.progress = progress;
   settings.cancel = cancel;
   bool checkpointed = false;
@@ -297,10 +294,7 @@ RenderCost estimate_reference_cost(const Scene& scene, const PathBudget& paths,
                                          : double(paths.per_channel[c]);
     trial_counts.push_back(std::max(kReplicates, int(std::lround(n * scale))));
   }
-  ReferenceSettings trial;
-  trial.paths = PathBudget(trial_counts);
-  trial.seed = scene.seed();
-  trial.trace.max_order = scene.max_order;
+  ReferenceSettings trial = reference_settings(scene, PathBudget(trial_counts));
   ReferenceImage image = render_reference(medium, reference_view(scene, body, model), trial);
   double trial_paths = double(image.paths);
   double pixels = double(scene.width) * double(scene.height);

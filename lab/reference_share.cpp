@@ -164,10 +164,7 @@ ReferenceShareRender render_reference_share(const Scene& scene, const PathBudget
   ReferenceShareRender result;
   result.file = reference_share_file(dir, share);
 
-  ReferenceSettings settings;
-  settings.paths = paths;
-  settings.seed = scene.seed();
-  settings.trace.max_order = scene.max_order;
+  ReferenceSettings settings = reference_settings(scene, paths);
   settings.share = share;
   settings.progress = progress;
   settings.cancel = cancel;

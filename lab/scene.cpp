@@ -181,6 +181,14 @@ int checked_max_order(int max_order, const std::string& where) {
   return max_order;
 }
 
+ReferenceSettings reference_settings(const Scene& scene, const PathBudget& paths) {
+  ReferenceSettings settings;
+  settings.paths = paths;
+  settings.seed = scene.seed();
+  settings.trace.max_order = scene.max_order;
+  return settings;
+}
+
 ReferenceView reference_view(const Scene& scene, const Body& body, const AtmosphereModel& model) {
   ReferenceView view;
   view.width = scene.width;

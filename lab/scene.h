@@ -61,6 +61,11 @@ PathBudget shipped_reference_paths(const std::string& scene_name);
 Body scene_body(const Scene& scene);
 AtmosphereModel scene_atmosphere(const Scene& scene, const Body& body);
 
+// What the scene fixes in a render of its ground truth: the budget, the
+// seed of its random streams and the orders it sums (reference_render.h);
+// the caller adds progress, checkpoints, cancel and shares.
+ReferenceSettings reference_settings(const Scene& scene, const PathBudget& paths);
+
 // The scene's camera in atmosphere space, ray for ray the one FrameRenderer
 // builds (both are atmo_ray_from_ndc, atmosphere_space.h), for the path tracer.
 ReferenceView reference_view(const Scene& scene, const Body& body, const AtmosphereModel& model);
