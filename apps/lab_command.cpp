@@ -50,12 +50,7 @@ std::string report_python() {
 // saying what each will cost.
 void ensure_references(const SweepPlan& plan, const LabArgs& args) {
   for (const Scene& scene : plan.scenes) {
-    std::optional<PathBudget> cached = best_cached_budget(scene, ReferenceMode::kRgb);
-    if (cached && args.options.paths) cached.reset();
-    PathBudget budget = args.options.paths ? *args.options.paths
-                        : cached           ? *cached
-                                           : PathBudget(4096);
-    reference_for_command(scene, budget, args.quiet);
+    reference_for_command(scene, sweep_reference_budget(args.options, scene), args.quiet);
   }
 }
 

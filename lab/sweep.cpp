@@ -157,6 +157,12 @@ double geometric_mean(const std::vector<double>& v) {
 
 }  // namespace
 
+PathBudget sweep_reference_budget(const SweepOptions& o, const Scene& scene) {
+  if (o.paths) return *o.paths;
+  std::optional<PathBudget> cached = best_cached_budget(scene, ReferenceMode::kRgb);
+  return cached ? *cached : PathBudget(kDefaultPaths);
+}
+
 double SweepCell::error() const {
   return std::max({debiased[0], debiased[1], debiased[2]});
 }
@@ -255,9 +261,8 @@ std::vector<SweepCell> run_sweep(const SweepOptions& o, const SweepPlan& plan,
   for (const Scene& scene : plan.scenes) {
     // The ground truth once per scene: the best cached or shipped, else
     // rendered (the command has said what that costs).
-    std::optional<PathBudget> cached = best_cached_budget(scene, ReferenceMode::kRgb);
-    PathBudget budget = o.paths ? *o.paths : cached ? *cached : PathBudget(kDefaultPaths);
-    ReferenceRender reference = reference_render(scene, budget, ReferenceMode::kRgb);
+    ReferenceRender reference =
+        reference_render(scene, sweep_reference_budget(o, scene), ReferenceMode::kRgb);
     SceneTruth truth{reference.image, reference.noise, sun_disk_mask(scene), {}};
     truth.reference_rgb8 = tone_mapped_rgb8(truth.image, scene.exposure);
     std::filesystem::path dir = o.out / "cells" / scene.name;

@@ -54,6 +54,10 @@ struct SweepPlan {
 // Checks every name and the output folder (InputError) before any work.
 SweepPlan plan_sweep(const SweepOptions& options);
 
+// The budget of the scene's ground truth in the sweep: options.paths if
+// given, else the best cached or shipped, else 4096 paths per pixel.
+PathBudget sweep_reference_budget(const SweepOptions& options, const Scene& scene);
+
 // Runs the cells not yet done (all with redo), then writes results.json,
 // results.csv and the cells' images under options.out. Needs a GL context.
 // `progress` sees (cells done, cells in all, the cell now).
