@@ -62,7 +62,7 @@ void run(const FlyArgs& args) {
   ContextOptions options;
   options.width = args.width;
   options.height = args.height;
-  options.title = "planet fly";
+  options.title = kFlyTitle;
   auto context = GlContext::create_window(options);
   FlyInput input(context->window());  // first: the HUD's backend chains to its callback
   Hud hud(context->window());

@@ -123,12 +123,12 @@ void FlySession::attach(const Body& body) {
   // the loop: their progress goes to the window's title, and the window
   // keeps answering the desktop (key presses wait in their queue).
   set_progress_observer([this](const std::string& line, double) {
-    glfwSetWindowTitle(window_, ("planet fly: " + line).c_str());
+    glfwSetWindowTitle(window_, fmt::format("{}: {}", kFlyTitle, line).c_str());
     glfwPollEvents();
   });
   renderer_->set_body(body, atmosphere, std::move(technique));
   set_progress_observer(nullptr);
-  glfwSetWindowTitle(window_, "planet fly");
+  glfwSetWindowTitle(window_, kFlyTitle);
 }
 
 // A new body: the pilot starts over the start place (a few km up unless it

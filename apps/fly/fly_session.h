@@ -20,6 +20,10 @@ struct GLFWwindow;
 
 namespace planet::apps {
 
+// The window's title (the tests find the window by it); a long wait puts
+// its progress after it.
+inline constexpr const char* kFlyTitle = "planet fly";
+
 struct FlyArgs {
   std::string planet = "earth", technique = "hillaire", time = "2026-06-21T10:00:00Z";
   // height_m counts from the ground under the start place.
