@@ -1,6 +1,7 @@
 // planet accuracy: a GPU technique against the path-traced ground truth on
 // canonical scenes, as a table of RMSE and relative RMSE per channel (sun
-// disk left out), with the reference's own noise estimated beside it, the
+// disk left out), with the reference's own noise estimated beside it and taken
+// out of the error (with its 95 % interval), the
 // relative RMSE over the open sky alone, and the mean signed error (bias);
 // the images are written where a person can look at them.
 #include "apps/commands.h"
@@ -13,6 +14,7 @@
 #include "core/tone_map.h"
 #include "gl/context.h"
 #include "lab/accuracy.h"
+#include "lab/debiased_error.h"
 #include "lab/reference_cache.h"
 #include "lab/scene_render.h"
 
@@ -77,8 +79,8 @@ void run_accuracy(const AccuracyArgs& args) {
   } catch (const InputError& e) {
     throw InputError(fmt::format("--technique: {}", e.what()));
   }
-  std::printf("%-16s %-3s %11s %11s %9s %9s %9s %6s\n", "scene", "ch", "RMSE", "mean ref",
-              "rel RMSE", "ref noise", "sky only", "bias");
+  std::printf("%-16s %-3s %11s %11s %9s %9s %-24s %9s %6s\n", "scene", "ch", "RMSE", "mean ref",
+              "rel RMSE", "ref noise", " debiased (95 % interval)", "sky only", "bias");
   InterruptScope interrupt;
   for (size_t k = 0; k < scenes.size(); ++k) {
     const Scene& scene = scenes[k];
@@ -89,6 +91,9 @@ void run_accuracy(const AccuracyArgs& args) {
     TechniqueAccuracy accuracy = measure_accuracy(scene, technique, reference);
     // The reference's own noise: the RMS of its per-pixel standard error.
     std::array<double, 3> noise = masked_rms(ground_truth.noise, sun_disk_mask(scene));
+    // The technique's own error, the reference's noise taken out.
+    std::array<DebiasedError, 3> debiased =
+        debiased_error(technique, reference, ground_truth.noise, sun_disk_mask(scene));
     const char* names[3] = {"R", "G", "B"};
     for (size_t c = 0; c < 3; ++c) {
       const ChannelError& e = accuracy.channels[c];
@@ -97,9 +102,13 @@ void run_accuracy(const AccuracyArgs& args) {
         bias += accuracy.signed_error.pixels[i];
       }
       bias /= double(std::max(accuracy.pixels, 1));
-      std::printf("%-16s %-3s %11.4g %11.4g %8.2f%% %8.2f%% %8.2f%% %+5.1f%%\n", scene.name.c_str(),
-                  names[c], e.rmse, e.mean_reference, 100 * e.relative(),
-                  100 * noise[c] / std::max(e.mean_reference, 1e-30),
+      const DebiasedError& d = debiased[c];
+      std::string interval =
+          fmt::format("{:8.2f}% [{:.2f}, {:.2f}]", 100 * d.relative(d.debiased_rmse),
+                      100 * d.relative(d.low), 100 * d.relative(d.high));
+      std::printf("%-16s %-3s %11.4g %11.4g %8.2f%% %8.2f%% %-24s %8.2f%% %+5.1f%%\n",
+                  scene.name.c_str(), names[c], e.rmse, e.mean_reference, 100 * e.relative(),
+                  100 * noise[c] / std::max(e.mean_reference, 1e-30), interval.c_str(),
                   100 * accuracy.sky_channels[c].relative(), 100 * bias);
     }
     if (folder) write_accuracy_images(folder->path(), scene, technique, reference, accuracy);

@@ -65,6 +65,7 @@ void FrameRenderer::draw_surfaces(const Camera& camera, const glm::dvec3& sun_di
     lighting.atmo_scale = atmosphere_scale(body_.shape, atmosphere_->bottom_radius);
     lighting.solar_irradiance = glm::vec3(atmosphere_->solar_irradiance);
     if (technique_) lighting.sky_irradiance = technique_->ground_irradiance();
+    lighting.sky_light = surface_sky_light_;
   }
   // Bound even for an airless body (then all zero): the block is declared.
   glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, atmosphere_block_.id());

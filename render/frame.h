@@ -50,6 +50,11 @@ class FrameRenderer {
   // time too (PassTiming::wall_ms): for benchmarks.
   void set_synchronous_timing(bool synchronous) { timer_.set_synchronous(synchronous); }
   TerrainRenderer* terrain() { return terrain_.get(); }
+  // False: the surfaces are lit by the sun alone, without the sky's light
+  // (the second order of scattering): with a technique that draws single
+  // scattering alone, the frame is the first order, as `reference
+  // --max-order 1` traces it.
+  void set_surface_sky_light(bool on) { surface_sky_light_ = on; }
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -79,6 +84,7 @@ class FrameRenderer {
   std::unique_ptr<TerrainRenderer> terrain_;
   TerrainStats terrain_stats_;
   double terrain_wait_s_ = 300.0;
+  bool surface_sky_light_ = true;
 
   Body body_;
   std::optional<AtmosphereModel> atmosphere_;

@@ -97,7 +97,9 @@ TerrainStats TerrainRenderer::draw(const Camera& camera, int width, int height,
   glUniform3fv(program_.uniform("u_sun_dir_body"), 1,
                glm::value_ptr(glm::vec3(lighting.sun_dir_body)));
   glUniform1i(program_.uniform("u_has_atmosphere"), lighting.has_atmosphere ? 1 : 0);
-  glUniform1i(program_.uniform("u_has_sky_irradiance"), lighting.sky_irradiance != 0 ? 1 : 0);
+  // terrain.vert's u_sky_light: 0 none, 1 the technique's table, 2 its own estimate.
+  int sky_light = !lighting.sky_light ? 0 : lighting.sky_irradiance != 0 ? 1 : 2;
+  glUniform1i(program_.uniform("u_sky_light"), sky_light);
   if (lighting.sky_irradiance != 0) glBindTextureUnit(kSkyIrradianceUnit, lighting.sky_irradiance);
   glUniform3fv(program_.uniform("u_sun_irradiance"), 1, glm::value_ptr(lighting.solar_irradiance));
   if (lighting.has_atmosphere) {

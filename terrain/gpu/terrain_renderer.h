@@ -43,6 +43,9 @@ struct TerrainLighting {
   // (AtmosphereTechnique::ground_irradiance), or 0: then a one-bounce
   // estimate of the shader's own.
   GLuint sky_irradiance = 0;
+  // False: the ground is lit by the sun alone, as in single scattering
+  // (the sky's light on it is the second order).
+  bool sky_light = true;
 };
 
 class TerrainRenderer {

@@ -17,7 +17,7 @@ uniform int u_has_atmosphere;
 uniform vec3 u_atmo_scale;
 uniform vec3 u_camera_atmo;
 uniform vec3 u_sun_dir_atmo;
-uniform int u_has_sky_irradiance;
+uniform int u_sky_light;  // 0: none (single scattering), 1: u_sky_irradiance, 2: an estimate
 layout(binding = 15) uniform sampler2D u_sky_irradiance;
 
 out vec3 v_normal_body;
@@ -40,9 +40,11 @@ void main() {
   if (u_has_atmosphere != 0) {
     vec3 p = u_camera_atmo + u_atmo_scale * rel_eye;
     v_sun_transmittance = surface_sun_transmittance(block_atmosphere(), p, u_sun_dir_atmo);
-    v_sky_irradiance = u_has_sky_irradiance != 0
-                           ? surface_sky_irradiance(u_sky_irradiance, p, a_normal, u_sun_dir_atmo)
-                           : surface_sky_irradiance_estimate(p, a_normal, u_sun_dir_atmo,
-                                                             v_sun_transmittance);
+    if (u_sky_light == 1) {
+      v_sky_irradiance = surface_sky_irradiance(u_sky_irradiance, p, a_normal, u_sun_dir_atmo);
+    } else if (u_sky_light == 2) {
+      v_sky_irradiance =
+          surface_sky_irradiance_estimate(p, a_normal, u_sun_dir_atmo, v_sun_transmittance);
+    }
   }
 }
