@@ -46,11 +46,13 @@ std::string report_python() {
       "scripts/install-deps.sh installs it), or --no-report for the tables alone");
 }
 
-// The scenes' references, rendered first where none is cached, after
-// saying what each will cost.
+// The scenes' references and their first orders, rendered first where
+// none is cached, after saying what each will cost.
 void ensure_references(const SweepPlan& plan, const LabArgs& args) {
   for (const Scene& scene : plan.scenes) {
     reference_for_command(scene, sweep_reference_budget(args.options, scene), args.quiet);
+    Scene first = first_order_scene(scene);
+    reference_for_command(first, sweep_reference_budget(args.options, first), args.quiet);
   }
 }
 

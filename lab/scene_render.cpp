@@ -5,13 +5,26 @@
 
 namespace planet {
 
-ImageRGB render_scene_with(const Scene& scene, const std::string& technique) {
+namespace {
+
+ImageRGB render(const Scene& scene, const std::string& technique, bool sky_light) {
   Body body = scene_body(scene);
   AtmosphereModel model = scene_atmosphere(scene, body);
   FrameRenderer renderer(scene.width, scene.height);
+  renderer.set_surface_sky_light(sky_light);
   renderer.set_body(body, model, make_technique(technique));
   renderer.render(scene.camera, scene.sun_dir_body, scene.exposure);
   return image_from_gl(scene.width, scene.height, renderer.read_hdr());
+}
+
+}  // namespace
+
+ImageRGB render_scene_with(const Scene& scene, const std::string& technique) {
+  return render(scene, technique, true);
+}
+
+ImageRGB render_first_order_with(const Scene& scene, const std::string& technique) {
+  return render(scene, single_scattering_text(technique), false);
 }
 
 }  // namespace planet

@@ -12,6 +12,7 @@
 #include "lab/debiased_error.h"
 #include "lab/pareto.h"
 #include "lab/reference_cache.h"
+#include "lab/scene_render.h"
 #include "render/frame.h"
 
 #include <epoxy/gl.h>
@@ -108,18 +109,28 @@ void time_cell(const Scene& scene, const std::string& choice, int frames, SweepC
 
 struct SceneTruth {
   ImageRGB image, noise;
+  ImageRGB first_order, first_order_noise;  // the first order alone, its noise
   std::vector<uint8_t> sun_mask;
   std::vector<uint8_t> reference_rgb8;
 };
 
+// a - b, pixel by pixel.
+ImageRGB difference(const ImageRGB& a, const ImageRGB& b) {
+  ImageRGB out = a;
+  for (size_t i = 0; i < out.pixels.size(); ++i) out.pixels[i] -= b.pixels[i];
+  return out;
+}
+
+// The standard error of the difference of two independent renders.
+ImageRGB combined_noise(const ImageRGB& a, const ImageRGB& b) {
+  ImageRGB out = a;
+  for (size_t i = 0; i < out.pixels.size(); ++i) out.pixels[i] = std::hypot(a.pixels[i], b.pixels[i]);
+  return out;
+}
+
 void measure_cell(const Scene& scene, const std::string& choice, const SceneTruth& truth,
                   const std::filesystem::path& image_stem, SweepCell& cell) {
-  Body body = scene_body(scene);
-  AtmosphereModel model = scene_atmosphere(scene, body);
-  FrameRenderer renderer(scene.width, scene.height);
-  renderer.set_body(body, model, make_technique(choice));
-  renderer.render(scene.camera, scene.sun_dir_body, scene.exposure);
-  ImageRGB image = image_from_gl(scene.width, scene.height, renderer.read_hdr());
+  ImageRGB image = render_scene_with(scene, choice);
   TechniqueAccuracy accuracy = measure_accuracy(scene, image, truth.image);
   std::array<DebiasedError, 3> e = debiased_error(image, truth.image, truth.noise, truth.sun_mask);
   for (size_t c = 0; c < 3; ++c) {
@@ -128,6 +139,20 @@ void measure_cell(const Scene& scene, const std::string& choice, const SceneTrut
     cell.debiased_low[c] = e[c].relative(e[c].low);
     cell.debiased_high[c] = e[c].relative(e[c].high);
   }
+  // The split by order: the technique's first order against the truth's,
+  // and the rest of each against the other's.
+  ImageRGB first = render_first_order_with(scene, choice);
+  std::array<DebiasedError, 3> single =
+      debiased_error(first, truth.first_order, truth.first_order_noise, truth.sun_mask);
+  std::array<DebiasedError, 3> higher =
+      debiased_error(difference(image, first), difference(truth.image, truth.first_order),
+                     combined_noise(truth.noise, truth.first_order_noise), truth.sun_mask);
+  for (size_t c = 0; c < 3; ++c) {
+    double mean = e[c].mean_reference;
+    cell.single_error[c] = mean > 0 ? single[c].debiased_rmse / mean : 0.0;
+    cell.higher_error[c] = mean > 0 ? higher[c].debiased_rmse / mean : 0.0;
+  }
+  cell.split = true;
   cell.worst_pixel = 0;
   for (size_t i = 0; i < truth.sun_mask.size(); ++i) {
     if (truth.sun_mask[i]) continue;
@@ -161,6 +186,11 @@ PathBudget sweep_reference_budget(const SweepOptions& o, const Scene& scene) {
   if (o.paths) return *o.paths;
   std::optional<PathBudget> cached = best_cached_budget(scene, ReferenceMode::kRgb);
   return cached ? *cached : PathBudget(kDefaultPaths);
+}
+
+Scene first_order_scene(Scene scene) {
+  scene.max_order = 1;
+  return scene;
 }
 
 double SweepCell::error() const {
@@ -224,6 +254,8 @@ nlohmann::json cell_to_json(const SweepCell& c) {
           {"debiased_high", c.debiased_high},
           {"worst_pixel", c.worst_pixel},
           {"ciede2000", c.ciede2000},
+          {"single_error", c.split ? nlohmann::json(c.single_error) : nlohmann::json()},
+          {"higher_error", c.split ? nlohmann::json(c.higher_error) : nlohmann::json()},
           {"error", c.error()},
           {"on_front", c.on_front}};
 }
@@ -245,6 +277,12 @@ SweepCell cell_from_json(const nlohmann::json& j, const std::string& file) {
     c.debiased_high = j.at("debiased_high").get<std::array<double, 3>>();
     c.worst_pixel = j.at("worst_pixel").get<double>();
     c.ciede2000 = j.at("ciede2000").get<double>();
+    // Cells of an earlier sweep may lack the split: null, or not there.
+    if (j.contains("single_error") && !j.at("single_error").is_null()) {
+      c.single_error = j.at("single_error").get<std::array<double, 3>>();
+      c.higher_error = j.at("higher_error").get<std::array<double, 3>>();
+      c.split = true;
+    }
     return c;
   } catch (const nlohmann::json::exception& e) {
     throw InputError(fmt::format("{}: not a cell of planet lab run ({}); delete it or run with "
@@ -263,7 +301,11 @@ std::vector<SweepCell> run_sweep(const SweepOptions& o, const SweepPlan& plan,
     // rendered (the command has said what that costs).
     ReferenceRender reference =
         reference_render(scene, sweep_reference_budget(o, scene), ReferenceMode::kRgb);
-    SceneTruth truth{reference.image, reference.noise, sun_disk_mask(scene), {}};
+    Scene first = first_order_scene(scene);
+    ReferenceRender first_order =
+        reference_render(first, sweep_reference_budget(o, first), ReferenceMode::kRgb);
+    SceneTruth truth{reference.image, reference.noise, first_order.image, first_order.noise,
+                     sun_disk_mask(scene), {}};
     truth.reference_rgb8 = tone_mapped_rgb8(truth.image, scene.exposure);
     std::filesystem::path dir = o.out / "cells" / scene.name;
     std::filesystem::create_directories(dir);
@@ -339,6 +381,9 @@ std::vector<SweepCell> run_sweep(const SweepOptions& o, const SweepPlan& plan,
       {"frames", o.frames},
       {"cost", "wall_ms: the atmosphere's passes per frame, synchronous, median of the frames"},
       {"error", "the worst channel's relative RMSE against the ground truth, its noise taken out"},
+      {"split",
+       "single_error: the technique's first order against the ground truth's; higher_error: the "
+       "orders above the first, each's against the other's; debiased relative RMSE per channel"},
       {"cells", nlohmann::json::array()},
       {"overall", overall}};
   for (const SweepCell& c : cells) results["cells"].push_back(cell_to_json(c));
@@ -347,15 +392,20 @@ std::vector<SweepCell> run_sweep(const SweepOptions& o, const SweepPlan& plan,
   std::string csv =
       "scene,technique,quality,choice,wall_ms,wall_spread_ms,gpu_ms,rel_rmse_r,rel_rmse_g,"
       "rel_rmse_b,debiased_r,debiased_g,debiased_b,debiased_low_r,debiased_low_g,debiased_low_b,"
-      "debiased_high_r,debiased_high_g,debiased_high_b,worst_pixel,ciede2000,error,on_front\n";
+      "debiased_high_r,debiased_high_g,debiased_high_b,worst_pixel,ciede2000,error,on_front,"
+      "single_r,single_g,single_b,higher_r,higher_g,higher_b\n";
   for (const SweepCell& c : cells) {
     csv += fmt::format("{},{},{},\"{}\",{:.4f},{:.4f},{:.4f}", c.scene, c.technique, c.quality,
                        c.choice, c.wall_ms, c.wall_spread_ms, c.gpu_ms);
     for (const auto* v : {&c.relative_rmse, &c.debiased, &c.debiased_low, &c.debiased_high}) {
       for (double x : *v) csv += fmt::format(",{:.6f}", x);
     }
-    csv += fmt::format(",{:.6f},{:.4f},{:.6f},{}\n", c.worst_pixel, c.ciede2000, c.error(),
+    csv += fmt::format(",{:.6f},{:.4f},{:.6f},{}", c.worst_pixel, c.ciede2000, c.error(),
                        c.on_front ? 1 : 0);
+    for (const auto* v : {&c.single_error, &c.higher_error}) {
+      for (double x : *v) csv += c.split ? fmt::format(",{:.6f}", x) : std::string(",");
+    }
+    csv += "\n";
   }
   write_file_atomically(o.out / "results.csv", csv);
   return cells;

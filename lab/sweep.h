@@ -2,7 +2,8 @@
 // The lab's sweep: every (technique, quality point, canonical scene) cell
 // timed on the scene's view at a display size and measured against the
 // scene's ground truth at the reference's size, with the reference's noise
-// taken out (debiased_error.h). Cells are kept one file each as they
+// taken out (debiased_error.h), and split into the first order of
+// scattering and the orders above it. Cells are kept one file each as they
 // finish, so that a sweep stopped part-way goes on where it stopped; the
 // fronts and tables are made from whatever cells are there.
 #include <nlohmann/json.hpp>
@@ -40,6 +41,13 @@ struct SweepCell {
   std::array<double, 3> debiased_low{}, debiased_high{};  // 95 % intervals
   double worst_pixel = 0;                  // largest |t - r| / mean reference, any channel
   double ciede2000 = 0;                    // mean, tone-mapped images
+  // The error split by order, each the debiased RMSE over the full
+  // reference's mean: the technique confined to single scattering
+  // (render_first_order_with) against the ground truth's first order, and
+  // what the orders above the first add, the technique's against the
+  // ground truth's (full minus first order in each).
+  std::array<double, 3> single_error{}, higher_error{};
+  bool split = false;                      // the two above were measured
   double error() const;                    // the worst channel's debiased relative RMSE
   bool on_front = false;                   // of its scene
   bool kept = false;                       // read from an earlier run, not timed now
@@ -57,6 +65,9 @@ SweepPlan plan_sweep(const SweepOptions& options);
 // The budget of the scene's ground truth in the sweep: options.paths if
 // given, else the best cached or shipped, else 4096 paths per pixel.
 PathBudget sweep_reference_budget(const SweepOptions& options, const Scene& scene);
+// The scene's ground truth's first order (single scattering), which the
+// sweep splits each cell's error by.
+Scene first_order_scene(Scene scene);
 
 // Runs the cells not yet done (all with redo), then writes results.json,
 // results.csv and the cells' images under options.out. Needs a GL context.

@@ -9,7 +9,8 @@ quality), the Pareto front as a line; and OUT/report.html, one page with
 everything in it (the charts and images inline, no network): the charts,
 a sentence per scene naming the cheapest technique within 1, 2 and 5 %, the
 table of cells, and the technique / ground truth / error images of every
-point on a front.
+point on a front; and OUT/orders.{png,svg}: each (technique, quality)'s
+error split into its first order and the orders above it.
 """
 import base64
 import html
@@ -92,6 +93,58 @@ def chart(points, title, stem, style):
     plt.close(fig)
 
 
+def worst(values):
+    return max(values) if values else 0.0
+
+
+def geometric_mean(values):
+    values = [max(v, FLOOR) for v in values]
+    return math.exp(sum(math.log(v) for v in values) / len(values)) if values else FLOOR
+
+
+def order_split(cells, style):
+    """Per (technique, quality), over the scenes whose cells carry the split:
+    the geometric means of the worst channel's error in single scattering
+    and in the orders above it."""
+    points = {}
+    for c in cells:
+        if c.get("single_error") is None:
+            continue
+        key = (c["technique"], c["quality"])
+        points.setdefault(key, ([], []))
+        points[key][0].append(worst(c["single_error"]))
+        points[key][1].append(worst(c["higher_error"]))
+    return [{"technique": t, "quality": q, "single": geometric_mean(s),
+             "higher": geometric_mean(h), "scenes": len(s)}
+            for (t, q), (s, h) in points.items() if (t, q) in style]
+
+
+def orders_chart(split, stem, style):
+    fig, ax = plt.subplots(figsize=(7.5, 4.8), dpi=100)
+    for p in split:
+        colour, marker = style[(p["technique"], p["quality"])]
+        ax.scatter(p["single"], p["higher"], color=colour, marker=marker, s=46, zorder=3,
+                   label=f'{p["technique"]}:{p["quality"]}')
+    values = [v for p in split for v in (p["single"], p["higher"])]
+    low, high = min(values) / 1.5, max(values) * 1.5
+    ax.plot([low, high], [low, high], color="grey", linewidth=0.8, linestyle="--",
+            label="equal parts", zorder=1)
+    ax.set_xscale("log")
+    ax.set_yscale("log")
+    label_error = FuncFormatter(lambda v, _: f"{100 * v:.3g} %")
+    for axis in (ax.xaxis, ax.yaxis):
+        axis.set_major_formatter(label_error)
+    ax.set_xlabel("error in single scattering (against the first order)")
+    ax.set_ylabel("error in the orders above the first")
+    ax.set_title("Where the error comes from (geometric means over the scenes)")
+    ax.grid(True, which="both", linewidth=0.3, alpha=0.5)
+    ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5), frameon=False)
+    fig.tight_layout()
+    fig.savefig(stem + ".png")
+    fig.savefig(stem + ".svg")
+    plt.close(fig)
+
+
 def inline_png(path):
     try:
         with open(path, "rb") as f:
@@ -112,6 +165,11 @@ def percent(x):
     return f"{100 * x:.2f}"
 
 
+def by_order(cell, key):
+    values = cell.get(key)
+    return "-" if values is None else " / ".join(percent(v) for v in values)
+
+
 def main():
     if len(sys.argv) != 2:
         sys.exit("usage: lab_report.py OUT (the folder of planet lab run's results.json)")
@@ -125,6 +183,10 @@ def main():
     for scene in scenes:
         chart([c for c in cells if c["scene"] == scene], scene,
               os.path.join(out, f"pareto_{scene}"), style)
+
+    split = order_split(cells, style)
+    if split:
+        orders_chart(split, os.path.join(out, "orders"), style)
 
     e = html.escape
     parts = [
@@ -149,6 +211,19 @@ def main():
     parts.append("<p>On the overall front, from the cheapest: " + ", ".join(
         f'{e(p["technique"])}:{e(p["quality"])} ({p["wall_ms"]:.3g} ms, {percent(p["error"])} %)'
         for p in sorted(front, key=lambda p: p["wall_ms"])) + ".</p>")
+    if split:
+        parts.append("<h2>Where the error comes from</h2><p>Each point's error split by order "
+                     "(the worst channel's debiased relative RMSE, geometric means over the "
+                     "scenes): the technique confined to single scattering against the ground "
+                     "truth's first order, and what the orders above the first add, the "
+                     "technique's against the ground truth's. A point far above the dashed line "
+                     "is held back by its multiple scattering; one far to its right by its "
+                     "single scattering.</p>")
+        parts.append(f'<div class="chart" id="chart-orders">'
+                     f'{inline_png(os.path.join(out, "orders.png"))}</div>')
+        parts.append("<p>" + "; ".join(
+            f'{e(p["technique"])}:{e(p["quality"])} {percent(p["single"])} % and '
+            f'{percent(p["higher"])} %' for p in split) + ".</p>")
     for scene in scenes:
         here = [c for c in cells if c["scene"] == scene]
         parts.append(f"<h2>{e(scene)}</h2>")
@@ -170,12 +245,14 @@ def main():
                 f'{inline_png(os.path.join(out, "cells", scene, "reference.png"))}'
                 f'{inline_png(stem + "_error.png")}</p>')
     parts.append("<h2>Every cell</h2><p>Relative RMSE per channel in %, R / G / B: plain (the "
-                 "reference's noise in it) and debiased with its 95 % interval; the worst "
+                 "reference's noise in it) and debiased with its 95 % interval; the debiased "
+                 "error of its single scattering and of the orders above; the worst "
                  "pixel's relative error; the mean CIEDE2000 of the tone-mapped images. Rows "
                  "on their scene's front are shaded.</p>")
     parts.append('<table id="cells"><thead><tr><th class="l">scene</th><th class="l">technique'
                  '</th><th class="l">quality</th><th>ms</th><th>spread ms</th><th>plain %</th>'
-                 '<th>debiased % [95 %]</th><th>worst pixel %</th><th>CIEDE2000</th></tr></thead>'
+                 '<th>debiased % [95 %]</th><th>single %</th><th>higher orders %</th>'
+                 '<th>worst pixel %</th><th>CIEDE2000</th></tr></thead>'
                  '<tbody>')
     for c in cells:
         debiased = " / ".join(
@@ -187,6 +264,7 @@ def main():
             f'<td class="l">{e(c["technique"])}</td><td class="l">{e(c["quality"])}</td>'
             f'<td>{c["wall_ms"]:.3g}</td><td>{c["wall_spread_ms"]:.2g}</td>'
             f'<td>{" / ".join(percent(v) for v in c["relative_rmse"])}</td><td>{debiased}</td>'
+            f'<td>{by_order(c, "single_error")}</td><td>{by_order(c, "higher_error")}</td>'
             f'<td>{percent(c["worst_pixel"])}</td><td>{c["ciede2000"]:.2f}</td></tr>')
     parts.append("</tbody></table></body></html>")
     path = os.path.join(out, "report.html")

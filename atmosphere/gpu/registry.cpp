@@ -37,6 +37,13 @@ std::vector<QualityParameter> hillaire_quality() {
        {}},
       {"aerial_range_km", "distance the froxels cover near the ground, km", 1, 1000, 32, false, {}},
       {"path", "which path draws the frame", 0, 2, 0, true, {"by_altitude", "luts", "per_pixel"}},
+      {"multiple",
+       "the orders above the first; off: single scattering alone (for the lab's split by order)",
+       0,
+       1,
+       1,
+       true,
+       {"off", "on"}},
   };
 }
 
@@ -49,6 +56,7 @@ std::unique_ptr<AtmosphereTechnique> make_hillaire(const TechniqueChoice& c,
   s.aerial_substeps = c.integer("aerial_substeps");
   s.aerial_range = c.value("aerial_range_km") * 1e3;
   s.path = HillaireTechnique::Path(c.integer("path"));
+  s.multiple = c.integer("multiple") == 1;
   return std::make_unique<HillaireTechnique>(s);
 }
 
@@ -98,6 +106,7 @@ std::vector<TechniqueEntry> make_registry() {
        {{"cheap", "view_steps=8,light_steps=4"},
         {"default", ""},
         {"fine", "view_steps=128,light_steps=64"}},
+       "",
        [](const TechniqueChoice& c) {
          return std::make_unique<RaymarchTechnique>(
              RaymarchTechnique::Steps{c.integer("view_steps"), c.integer("light_steps")});
@@ -105,7 +114,7 @@ std::vector<TechniqueEntry> make_registry() {
       {"hillaire", "ours, on Hillaire 2020's tables",
        "transmittance, multiple-scattering (six orders to spherical-harmonic degree 4 and a "
        "forward-gain LUT), sky-view and aerial-perspective LUTs; a per-pixel march high up",
-       hillaire_quality(), kHillaireQualityPoints,
+       hillaire_quality(), kHillaireQualityPoints, "multiple=off",
        [](const TechniqueChoice& c) {
          return make_hillaire(c, HillaireTechnique::MultipleScattering::kOrders);
        }},
@@ -138,6 +147,8 @@ std::vector<TechniqueEntry> make_registry() {
          "mu_size=128,mu_s_size=32,floats=half,textures=combined,tail=none,integration_steps=50"},
         {"default", ""},
         {"fine", "nu_size=16,orders=8,sphere_samples=24"}},
+       // One order: no tail (it needs three), no sky light on the ground.
+       "orders=1",
        make_bruneton},
       {"oneil", "O'Neil 2005 (GPU Gems 2, ch. 16)",
        "single scattering per vertex of a sky dome and of a screen-space grid over the surfaces, "
@@ -157,10 +168,11 @@ std::vector<TechniqueEntry> make_registry() {
         {"chapter", "samples=5,scale=chapter"},
         {"default", ""},
         {"fine", "samples=16,dome=96,cell=4"}},
+       "",
        make_oneil},
       {"hillaire2020", "Hillaire 2020",
        "the paper's LUTs, with its multiple scattering Psi = L2 / (1 - f_ms)", hillaire_quality(),
-       kHillaireQualityPoints,
+       kHillaireQualityPoints, "multiple=off",
        [](const TechniqueChoice& c) {
          return make_hillaire(c, HillaireTechnique::MultipleScattering::kPaper);
        }},
@@ -281,6 +293,12 @@ TechniqueChoice parse_technique(const std::string& text) {
   return choice;
 }
 
+std::string single_scattering_text(const std::string& text) {
+  const TechniqueEntry& t = technique_entry(text.substr(0, text.find(':')));
+  if (t.single_scattering.empty()) return text;
+  return text + (text.find(':') == std::string::npos ? ":" : ",") + t.single_scattering;
+}
+
 std::unique_ptr<AtmosphereTechnique> make_technique(const TechniqueChoice& choice) {
   return technique_entry(choice.name).make(choice);
 }
@@ -305,6 +323,8 @@ std::string describe_techniques() {
     std::vector<std::string> points;
     for (const auto& [name, settings] : t.quality_points) points.push_back(name);
     out += fmt::format("  quality points for the lab: {}\n", fmt::join(points, ", "));
+    out += fmt::format("  single scattering alone (the lab's split by order): {}\n",
+                       t.single_scattering.empty() ? "as it is" : t.name + ":" + t.single_scattering);
   }
   return out;
 }

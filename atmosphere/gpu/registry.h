@@ -44,6 +44,10 @@ struct TechniqueEntry {
   // Quality points from cheap to expensive, each a name and the
   // `key=value,...` it sets (empty: the defaults), for the lab's sweeps.
   std::vector<std::pair<std::string, std::string>> quality_points;
+  // The `key=value,...` that leaves the technique drawing single scattering
+  // alone (empty: it draws nothing else), for the lab's split of its error
+  // into the first order and the orders above it.
+  std::string single_scattering;
   // Needs a current GL context.
   std::function<std::unique_ptr<AtmosphereTechnique>(const TechniqueChoice&)> make;
 };
@@ -56,6 +60,10 @@ const TechniqueEntry& technique_entry(const std::string& name);
 // InputError naming an unknown technique or key, a value that is not a
 // number (or not one of the choices), or one out of range.
 TechniqueChoice parse_technique(const std::string& text);
+
+// `text` (name or name:key=value,...) with its entry's single_scattering
+// settings after its own: the same technique drawing the first order alone.
+std::string single_scattering_text(const std::string& text);
 
 // Needs a current GL context.
 std::unique_ptr<AtmosphereTechnique> make_technique(const TechniqueChoice& choice);

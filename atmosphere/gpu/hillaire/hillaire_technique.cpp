@@ -129,6 +129,8 @@ HillaireTechnique::HillaireTechnique(Settings settings)
   const float zero[4] = {0, 0, 0, 0};
   glClearTexImage(ground_irradiance_lut_.id(), 0, GL_RGBA, GL_FLOAT, zero);
   glClearTexImage(multiple_scattering_lut_.id(), 0, GL_RGBA, GL_FLOAT, zero);
+  // Single scattering alone: the orders' table and the glow's stay zero.
+  if (!settings_.multiple) glClearTexImage(forward_gain_lut_.id(), 0, GL_RED, GL_FLOAT, zero);
   // The sky-view LUT spans the full circle of azimuth: it wraps.
   glTextureParameteri(sky_view_lut_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
 }
@@ -148,6 +150,10 @@ void HillaireTechnique::prepare(GpuTimer& timer) {
             shared::kTransmittanceLutWidth, shared::kTransmittanceLutHeight);
 
   glBindTextureUnit(2, transmittance_lut_.id());
+  if (!settings_.multiple) {
+    prepared_ = true;
+    return;
+  }
   timer.begin("multiple_scattering_lut");
   const int w = shared::kMultipleScatteringLutWidth, h = shared::kMultipleScatteringLutHeight;
   if (settings_.multiple_scattering == MultipleScattering::kPaper) {

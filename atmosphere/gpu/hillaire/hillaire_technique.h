@@ -27,6 +27,10 @@ class HillaireTechnique final : public AtmosphereTechnique {
   enum class MultipleScattering { kOrders, kPaper };
   struct Settings {
     MultipleScattering multiple_scattering = MultipleScattering::kOrders;
+    // False: single scattering alone (no orders above the first, no sky
+    // light on the ground, no forward glow), to be measured against the
+    // ground truth's first order.
+    bool multiple = true;
     int sky_view_steps = 30;
     int per_pixel_steps = 40;
     int aerial_substeps = 2;     // per froxel slice
@@ -48,7 +52,9 @@ class HillaireTechnique final : public AtmosphereTechnique {
   void prepare(GpuTimer& timer) override;
   void render(const SkyFrame& frame, GpuTimer& timer) override;
   GLuint ground_irradiance() const override {
-    return settings_.multiple_scattering == MultipleScattering::kOrders
+    // Single scattering alone: the table, left at zero, says the sky gives
+    // the ground no light.
+    return settings_.multiple_scattering == MultipleScattering::kOrders || !settings_.multiple
                ? ground_irradiance_lut_.id()
                : 0;
   }
