@@ -54,6 +54,16 @@ def styles(points):
     return style
 
 
+def finish(fig, ax, stem):
+    """A grid, the legend beside the axes, and the chart as PNG and SVG."""
+    ax.grid(True, which="both", linewidth=0.3, alpha=0.5)
+    ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5), frameon=False)
+    fig.tight_layout()
+    fig.savefig(stem + ".png")
+    fig.savefig(stem + ".svg")
+    plt.close(fig)
+
+
 def chart(points, title, stem, style):
     fig, ax = plt.subplots(figsize=(7.5, 4.8), dpi=100)
     for p in points:
@@ -85,12 +95,7 @@ def chart(points, title, stem, style):
     ax.set_xlabel("time per frame, ms (the atmosphere's passes)")
     ax.set_ylabel("error (worst channel's relative RMSE)")
     ax.set_title(title)
-    ax.grid(True, which="both", linewidth=0.3, alpha=0.5)
-    ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5), frameon=False)
-    fig.tight_layout()
-    fig.savefig(stem + ".png")
-    fig.savefig(stem + ".svg")
-    plt.close(fig)
+    finish(fig, ax, stem)
 
 
 def worst(values):
@@ -137,12 +142,7 @@ def orders_chart(split, stem, style):
     ax.set_xlabel("error in single scattering (against the first order)")
     ax.set_ylabel("error in the orders above the first")
     ax.set_title("Where the error comes from (geometric means over the scenes)")
-    ax.grid(True, which="both", linewidth=0.3, alpha=0.5)
-    ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5), frameon=False)
-    fig.tight_layout()
-    fig.savefig(stem + ".png")
-    fig.savefig(stem + ".svg")
-    plt.close(fig)
+    finish(fig, ax, stem)
 
 
 def inline_png(path):
@@ -271,7 +271,8 @@ def main():
     with open(path + ".part", "w", encoding="utf-8") as f:
         f.write("\n".join(parts))
     os.replace(path + ".part", path)
-    print(f"lab: wrote {path} and {len(scenes) + 1} charts (pareto_*.png, .svg)")
+    orders = " and the split by order (orders.png, .svg)" if split else ""
+    print(f"lab: wrote {path}, {len(scenes) + 1} charts (pareto_*.png, .svg){orders}")
 
 
 if __name__ == "__main__":
