@@ -140,7 +140,7 @@ void add_lab_command(CLI::App& app) {
       ->check(CLI::Range(2, 4096))
       ->capture_default_str();
   run->add_option("--spp", args->paths,
-                  "References' paths per pixel (default: the best cached, else 4096)");
+                  "References' paths per pixel (default: the best cached or shipped, else 8192)");
   run->add_flag("--redo", args->options.redo, "Time and measure finished cells again");
   run->add_flag("--no-report", args->no_report, "The tables alone: no charts, no report");
   run->add_flag("--quiet", args->quiet, "No progress lines");

@@ -56,6 +56,15 @@ int checked_max_order(int max_order, const std::string& where);
 // hold 4096. InputError for a name that is not a canonical scene.
 PathBudget shipped_reference_paths(const std::string& scene_name);
 
+// The lab's references, at the size `planet lab run` measures at: every
+// canonical scene with an atmosphere, and its first order, ship at 64x32,
+// with 8192 paths per pixel (earth_noon_dense50's full render 2048: its
+// paths scatter hundreds of times). Their noise is comparable to the best
+// techniques' errors, not a tenth of them: the lab takes it out of each
+// error (debiased_error.h). A minute or a few each here.
+constexpr int kLabWidth = 64, kLabHeight = 32;
+PathBudget lab_reference_paths(const Scene& scene);
+
 // What a scene renders: its body, and the body's atmosphere with the
 // scene's variant applied. InputError for an airless body.
 Body scene_body(const Scene& scene);

@@ -28,10 +28,6 @@ namespace planet {
 
 namespace {
 
-// What a reference gets when none of the view is cached and no budget is
-// given: as planet accuracy's.
-constexpr int kDefaultPaths = 4096;
-
 std::string cell_name(const std::string& technique, const std::string& quality) {
   return technique + "-" + quality;
 }
@@ -185,7 +181,7 @@ double geometric_mean(const std::vector<double>& v) {
 PathBudget sweep_reference_budget(const SweepOptions& o, const Scene& scene) {
   if (o.paths) return *o.paths;
   std::optional<PathBudget> cached = best_cached_budget(scene, ReferenceMode::kRgb);
-  return cached ? *cached : PathBudget(kDefaultPaths);
+  return cached ? *cached : lab_reference_paths(scene);
 }
 
 Scene first_order_scene(Scene scene) {

@@ -26,7 +26,7 @@ struct SweepOptions {
   std::filesystem::path out = "out/lab";
   int frames = 5;                       // timed after one untimed frame
   int time_width = 640, time_height = 360;
-  int width = 32, height = 16;          // accuracy: the shipped references' size
+  int width = kLabWidth, height = kLabHeight;  // accuracy: the lab's shipped references' size
   std::optional<PathBudget> paths;      // references not cached: this budget
   bool redo = false;                    // time and measure finished cells again
 };
@@ -63,7 +63,8 @@ struct SweepPlan {
 SweepPlan plan_sweep(const SweepOptions& options);
 
 // The budget of the scene's ground truth in the sweep: options.paths if
-// given, else the best cached or shipped, else 4096 paths per pixel.
+// given, else the best cached or shipped, else the lab's paths
+// (lab_reference_paths).
 PathBudget sweep_reference_budget(const SweepOptions& options, const Scene& scene);
 // The scene's ground truth's first order (single scattering), which the
 // sweep splits each cell's error by.
