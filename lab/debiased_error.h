@@ -6,7 +6,10 @@
 // d^2 - s^2 over the pixels is then an unbiased estimate of the sum of e^2,
 // with variance sum (4 e^2 s^2 + 2 s^4) for Gaussian noise, from which a
 // 95 % interval follows. A reference whose noise is comparable to the error
-// (rather than a tenth of it) then serves.
+// (rather than a tenth of it) then serves. The references estimate s from
+// two replicates (reference_render.cpp): s^2 stays unbiased, and the
+// variance of its estimate (2 s^4 more) is covered, as the estimate's
+// square averages 3 s^4 (a test holds the interval so).
 #include "core/image_io.h"
 
 #include <array>

@@ -53,6 +53,30 @@ TEST(DebiasedErrorTest, TakesTheNoiseOutAndItsIntervalHoldsTheTruth) {
   EXPECT_LE(held, trials);
 }
 
+// As the references have it (reference_render.cpp): the pixel the mean of
+// two replicates, its noise estimated from their difference alone (one
+// degree of freedom, so the estimate is itself as noisy as the noise).
+TEST(DebiasedErrorTest, NoiseEstimatedFromTwoReplicatesStillHoldsTheTruth) {
+  std::mt19937_64 rng(11);
+  const double error = 0.02, sigma = 0.03;
+  std::normal_distribution<double> gauss(0.0, sigma * std::sqrt(2.0));  // each replicate
+  int held = 0, trials = 200;
+  double debiased = 0;
+  for (int t = 0; t < trials; ++t) {
+    Case c = make_case(error, 0.0, rng);
+    for (size_t i = 0; i < c.reference.pixels.size(); ++i) {
+      double r0 = 1.0 + gauss(rng), r1 = 1.0 + gauss(rng);
+      c.reference.pixels[i] = float(0.5 * (r0 + r1));
+      c.noise.pixels[i] = float(0.5 * std::abs(r0 - r1));
+    }
+    std::array<DebiasedError, 3> e = debiased_error(c.technique, c.reference, c.noise, {});
+    debiased += e[0].debiased_rmse / trials;
+    if (e[0].low <= error && error <= e[0].high) ++held;
+  }
+  EXPECT_NEAR(debiased, error, 0.001);
+  EXPECT_GE(held, int(0.90 * trials));
+}
+
 TEST(DebiasedErrorTest, NoNoiseIsThePlainRmseAndAMaskLeavesPixelsOut) {
   std::mt19937_64 rng(1);
   Case c = make_case(0.1, 0.0, rng);
