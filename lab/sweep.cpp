@@ -106,6 +106,7 @@ void time_cell(const Scene& scene, const std::string& choice, int frames, SweepC
 struct SceneTruth {
   ImageRGB image, noise;
   ImageRGB first_order, first_order_noise;  // the first order alone, its noise
+  ImageRGB higher_orders, higher_orders_noise;  // image - first_order, its noise
   std::vector<uint8_t> sun_mask;
   std::vector<uint8_t> reference_rgb8;
 };
@@ -141,8 +142,8 @@ void measure_cell(const Scene& scene, const std::string& choice, const SceneTrut
   std::array<DebiasedError, 3> single =
       debiased_error(first, truth.first_order, truth.first_order_noise, truth.sun_mask);
   std::array<DebiasedError, 3> higher =
-      debiased_error(difference(image, first), difference(truth.image, truth.first_order),
-                     combined_noise(truth.noise, truth.first_order_noise), truth.sun_mask);
+      debiased_error(difference(image, first), truth.higher_orders, truth.higher_orders_noise,
+                     truth.sun_mask);
   for (size_t c = 0; c < 3; ++c) {
     double mean = e[c].mean_reference;
     cell.single_error[c] = mean > 0 ? single[c].debiased_rmse / mean : 0.0;
@@ -300,8 +301,14 @@ std::vector<SweepCell> run_sweep(const SweepOptions& o, const SweepPlan& plan,
     Scene first = first_order_scene(scene);
     ReferenceRender first_order =
         reference_render(first, sweep_reference_budget(o, first), ReferenceMode::kRgb);
-    SceneTruth truth{reference.image, reference.noise, first_order.image, first_order.noise,
-                     sun_disk_mask(scene), {}};
+    SceneTruth truth{reference.image,
+                     reference.noise,
+                     first_order.image,
+                     first_order.noise,
+                     difference(reference.image, first_order.image),
+                     combined_noise(reference.noise, first_order.noise),
+                     sun_disk_mask(scene),
+                     {}};
     truth.reference_rgb8 = tone_mapped_rgb8(truth.image, scene.exposure);
     std::filesystem::path dir = o.out / "cells" / scene.name;
     std::filesystem::create_directories(dir);

@@ -8,6 +8,7 @@
 #include "lab/accuracy.h"
 #include "lab/reference_cache.h"
 #include "lab/scene_render.h"
+#include "tests/atmosphere/accuracy_guard.h"
 
 #include <gtest/gtest.h>
 
@@ -27,8 +28,6 @@ struct FirstOrderCase {
   // asteroid's thin shell.
   std::array<double, 3> today;
 };
-
-double allowed_percent(double today) { return 1.2 * today + 0.2; }
 
 // clang-format off
 const FirstOrderCase kCases[] = {

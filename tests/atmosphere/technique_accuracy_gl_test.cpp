@@ -10,6 +10,7 @@
 #include "lab/scene_render.h"
 #include "render/frame.h"
 #include "sim/geodesy.h"
+#include "tests/atmosphere/accuracy_guard.h"
 
 #include <gtest/gtest.h>
 
@@ -41,10 +42,6 @@ struct TechniqueCase {
 };
 
 void PrintTo(const TechniqueCase& c, std::ostream* os) { *os << c.technique << " " << c.scene; }
-
-// What a channel may reach: today's error plus a fifth and 0.2 points, so
-// that a regression fails and llvmpipe's rounding does not.
-double allowed_percent(double today) { return 1.2 * today + 0.2; }
 
 // clang-format off
 const TechniqueCase kCases[] = {
