@@ -6,7 +6,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -41,6 +43,49 @@ void write_bruneton_cache(const std::string& key, const std::vector<CachedTable>
   std::filesystem::path file = bruneton_cache_file(key);
   std::filesystem::create_directories(file.parent_path());
   write_file_atomically(file, bytes);
+  if (uintmax_t limit = bruneton_cache_limit_bytes()) prune_bruneton_cache(limit, file);
+}
+
+uintmax_t bruneton_cache_limit_bytes() {
+  const char* env = std::getenv("PLANET_BRUNETON_CACHE_MB");
+  if (env && *env) {
+    char* end = nullptr;
+    double mb = std::strtod(env, &end);
+    if (end != env && *end == '\0' && mb >= 0) return uintmax_t(mb * 1024.0 * 1024.0);
+    std::fprintf(stderr, "planet: PLANET_BRUNETON_CACHE_MB='%s' is not a size in MB; 4096 is used\n",
+                 env);
+  }
+  return uintmax_t(4096) * 1024 * 1024;
+}
+
+int prune_bruneton_cache(uintmax_t limit, const std::filesystem::path& keep) {
+  struct Entry {
+    std::filesystem::file_time_type used;
+    uintmax_t bytes;
+    std::filesystem::path file;
+  };
+  std::vector<Entry> entries;
+  uintmax_t total = 0;
+  std::error_code ec;
+  for (auto it = std::filesystem::directory_iterator(cache_dir("bruneton"), ec);
+       !ec && it != std::filesystem::directory_iterator(); it.increment(ec)) {
+    if (it->path().extension() != ".tables") continue;
+    std::error_code e1, e2;
+    uintmax_t bytes = it->file_size(e1);
+    auto used = it->last_write_time(e2);
+    if (e1 || e2) continue;
+    total += bytes;
+    if (it->path() != keep) entries.push_back({used, bytes, it->path()});
+  }
+  std::sort(entries.begin(), entries.end(),
+            [](const Entry& a, const Entry& b) { return a.used < b.used; });
+  int removed = 0;
+  for (const Entry& e : entries) {
+    if (total <= limit) break;
+    std::error_code e1;
+    if (std::filesystem::remove(e.file, e1)) total -= e.bytes, ++removed;
+  }
+  return removed;
 }
 
 std::optional<std::vector<CachedTable>> read_bruneton_cache(const std::string& key,
@@ -92,6 +137,9 @@ std::optional<std::vector<CachedTable>> read_bruneton_cache(const std::string& k
     at += floats * sizeof(float);
   }
   if (at != payload.size()) return reject("it has bytes after its tables");
+  // Used now: the last to go when the folder is pruned.
+  std::error_code ec;
+  std::filesystem::last_write_time(file, std::filesystem::file_time_type::clock::now(), ec);
   return tables;
 }
 

@@ -3,7 +3,8 @@
 // quality (seconds to a minute), read back in milliseconds. One file per
 // key in cache_dir("bruneton"), written whole or not at all; a file whose
 // checksum or sizes do not match is reported, deleted and rebuilt, never
-// used.
+// used. The folder is kept under a size (bruneton_cache_limit_bytes): a
+// write that takes it over removes the files used longest ago.
 #include <cstdint>
 #include <filesystem>
 #include <optional>
@@ -27,5 +28,12 @@ std::filesystem::path bruneton_cache_file(const std::string& key);
 std::optional<std::vector<CachedTable>> read_bruneton_cache(const std::string& key,
                                                             const std::vector<CachedTable>& sizes);
 void write_bruneton_cache(const std::string& key, const std::vector<CachedTable>& tables);
+
+// The most the folder keeps: $PLANET_BRUNETON_CACHE_MB megabytes if set (0:
+// no limit), else 4096 MB, some thirty tables of the default quality.
+uintmax_t bruneton_cache_limit_bytes();
+// Removes the files read or written longest ago until the folder's tables
+// fit in `limit` bytes, the file `keep` aside; returns how many it removed.
+int prune_bruneton_cache(uintmax_t limit, const std::filesystem::path& keep);
 
 }  // namespace planet
