@@ -10,11 +10,14 @@
 #include "core/progress.h"
 #include "gl/context.h"
 #include "lab/reference_cache.h"
+#include "lab/stability.h"
 #include "lab/sweep.h"
 
 #include <fmt/format.h>
 
 #include <cstdio>
+#include <map>
+#include <tuple>
 #include <cstdlib>
 #include <memory>
 #include <string>
@@ -104,6 +107,122 @@ void run_lab(LabArgs& args) {
   }
 }
 
+struct StabilityArgs {
+  StabilityOptions options;
+  std::string out = "out/lab/stability", shard = "1/1";
+  bool quiet = false, no_report = false, list = false;
+};
+
+std::filesystem::path stability_script() {
+  return project_root() / "scripts" / "stability_report.py";
+}
+
+// What the shard's cells not yet done will cost on this machine, said
+// before any of it: the ground truths to render and the techniques' draws.
+// The rates are this project's 2-core llvmpipe machine's, from a full
+// default sweep (README: the stability map).
+double estimate_stability_seconds(const StabilityOptions& o,
+                                  const std::vector<StabilityCell>& cells, int& references,
+                                  int& draws) {
+  auto points = stability_points(o.techniques);
+  double seconds = 0;
+  references = draws = 0;
+  for (const StabilityCell& cell : cells) {
+    int left = 0;
+    for (const auto& [technique, quality] : points) {
+      std::filesystem::path file = stability_result_file(o, cell.scene.name, technique, quality);
+      if (o.redo || !std::filesystem::exists(file)) {
+        ++left;
+        // Bruneton's default tables, made once per model: some 15 s here.
+        bool tables = technique == "bruneton" && quality == "default" &&
+                      cell.point.altitude_m == 2.0 && cell.point.sun_elevation_deg == 60.0;
+        seconds += tables ? 15.0 : 0.6;
+      }
+    }
+    draws += left;
+    PathBudget budget = stability_reference_budget(cell);
+    if (left > 0 && !reference_cached(cell.scene, budget, ReferenceMode::kRgb)) {
+      ++references;
+      // 16x8 at 1024 paths: a few seconds in thin air; paths in dense air
+      // scatter many more times.
+      seconds += 4.0 * budget.spp / 1024.0 * std::max(1.0, cell.point.density / 3.0);
+    }
+  }
+  return seconds;
+}
+
+void run_stability_command(StabilityArgs& args) {
+  set_progress_shown(!args.quiet);
+  StabilityOptions& o = args.options;
+  o.out = args.out;
+  std::tie(o.shard, o.shards) = parse_shard(args.shard);
+  std::vector<StabilityCell> all = plan_stability(o);
+  if (args.list) {
+    for (const StabilityCell& c : all) {
+      std::string slices;
+      for (const std::string& s : c.slices) slices += (slices.empty() ? "" : " ") + s;
+      std::printf("%s  (%s)\n", c.scene.name.c_str(), slices.c_str());
+    }
+    return;
+  }
+  std::vector<StabilityCell> cells = shard_cells(named_cells(all, o.cells), o.shard, o.shards);
+  std::string python;
+  if (!args.no_report) {
+    check_readable_file(stability_script());
+    python = report_python();
+  }
+  OutputFolder folder(o.out, "--out");
+  int references = 0, draws = 0;
+  double seconds = estimate_stability_seconds(o, cells, references, draws);
+  std::printf("lab stability: shard %d/%d: %zu of the map's %zu cells x %zu (technique, quality) "
+              "points into %s\n",
+              o.shard, o.shards, cells.size(), all.size(), stability_points(o.techniques).size(),
+              o.out.string().c_str());
+  std::printf("lab stability: %d ground truths to render (16x8 and the like: seconds each, a "
+              "minute in dense air) and %d draws to make: about %.0f min on this project's 2-core "
+              "machine\n",
+              references, draws, seconds / 60.0);
+  std::fflush(stdout);
+  auto context = GlContext::create_headless();
+  InterruptScope interrupt;
+  const int total = int(cells.size() * stability_points(o.techniques).size());
+  Progress progress("lab stability", total, "draw", args.quiet);
+  std::vector<StabilityResult> results =
+      run_stability(o, cells, [&](int done, int, const std::string&) {
+        progress.update(done);
+        if (interrupt.interrupted()) {
+          progress.finish();
+          folder.keep();
+          std::fprintf(stderr,
+                       "planet: interrupted: %d of %d draws are done and kept in %s; run the "
+                       "same command again to go on\n",
+                       done, total, (o.out / "cells").string().c_str());
+          std::exit(kInterruptedExitStatus);
+        }
+      });
+  progress.finish();
+  folder.keep();
+  std::map<std::string, int> counts;
+  for (const StabilityResult& r : results) ++counts[to_string(r.cls)];
+  std::string summary;
+  for (const char* c : {"ok", "inaccurate", "nan", "exploded", "failed"}) {
+    summary += fmt::format("{}{} {}", summary.empty() ? "" : ", ", counts[c], c);
+  }
+  std::printf("lab stability: %zu results in %s (every shard's there): %s; wrote %s and %s\n",
+              results.size(), o.out.string().c_str(), summary.c_str(),
+              (o.out / "stability.json").string().c_str(),
+              (o.out / "stability.csv").string().c_str());
+  std::fflush(stdout);
+  if (args.no_report) return;
+  std::string command =
+      fmt::format("{} '{}' '{}'", python, stability_script().string(), o.out.string());
+  if (std::system(command.c_str()) != 0) {
+    throw InputError(fmt::format("lab stability: {} failed: the tables are in {}, the maps and "
+                                 "the report are not",
+                                 stability_script().string(), o.out.string()));
+  }
+}
+
 }  // namespace
 
 void add_lab_command(CLI::App& app) {
@@ -145,6 +264,47 @@ void add_lab_command(CLI::App& app) {
   run->add_flag("--no-report", args->no_report, "The tables alone: no charts, no report");
   run->add_flag("--quiet", args->quiet, "No progress lines");
   run->callback([args] { run_lab(*args); });
+
+  auto st = std::make_shared<StabilityArgs>();
+  CLI::App* stability = lab->add_subcommand(
+      "stability",
+      "Where each technique breaks: every technique over one-axis sweeps and two planes around "
+      "each body preset, each cell classified against its own ground truth");
+  stability->footer(
+      "Axes around Earth, Mars and the asteroid: density x0.1-100, Mie g -0.5-0.99, bottom "
+      "radius 10 km-70 000 km (at the preset's thickness ratio and at its thickness), scale "
+      "heights x0.25-10, camera altitude -1 km (inside the planet) to 1e9 m, sun elevation -20 to "
+      "90 deg; planes density x g and bottom radius x altitude. Classes: ok (within the budget), "
+      "inaccurate, nan, exploded (a value below zero or over 10x its reference's), failed (an "
+      "error or over the time limit). Results are kept one file per draw under OUT/cells: a "
+      "sweep stopped part-way goes on where it stopped; --shard K/N runs part K of N, and the "
+      "tables and maps gather every shard's results found in OUT. Writes OUT/stability.json, "
+      "OUT/stability.csv, and with python3-matplotlib the maps, the line plots and "
+      "OUT/report.html.");
+  stability->add_option("--techniques", st->options.techniques,
+                        "Techniques (default: every one in `planet techniques`)");
+  stability->add_option("--bodies", st->options.bodies, "Body presets (default: earth mars asteroid)");
+  stability->add_option("--cells", st->options.cells, "Only these cells, by name (--list)");
+  stability->add_flag("--list", st->list, "List the map's cells and their slices, and stop");
+  stability->add_option("--out", st->out, "Output folder")->capture_default_str();
+  stability->add_option("--budget", st->options.budget_percent,
+                        "Error budget, percent: a cell within it is ok")
+      ->capture_default_str();
+  stability->add_option("--time-limit", st->options.time_limit_s,
+                        "Seconds a technique may take over a cell before it counts as failed")
+      ->capture_default_str();
+  stability->add_option("--width", st->options.width, "Width of each cell's view")
+      ->check(CLI::Range(4, 512))
+      ->capture_default_str();
+  stability->add_option("--height", st->options.height, "Height of each cell's view")
+      ->check(CLI::Range(2, 256))
+      ->capture_default_str();
+  stability->add_option("--shard", st->shard, "This machine's part K of N, by cell")
+      ->capture_default_str();
+  stability->add_flag("--redo", st->options.redo, "Draw and classify finished cells again");
+  stability->add_flag("--no-report", st->no_report, "The tables alone: no maps, no report");
+  stability->add_flag("--quiet", st->quiet, "No progress lines");
+  stability->callback([st] { run_stability_command(*st); });
 }
 
 }  // namespace planet::apps

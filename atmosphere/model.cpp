@@ -149,6 +149,79 @@ AtmosphereModel with_scattering_scaled(AtmosphereModel m, double factor) {
   return m;
 }
 
+AtmosphereModel with_absorption_scaled(AtmosphereModel m, double factor) {
+  m.mie.absorption *= factor;
+  m.absorber.absorption *= factor;
+  if (m.spectrum) {
+    for (double& v : m.spectrum->mie_absorption) v *= factor;
+    for (double& v : m.spectrum->absorber_absorption) v *= factor;
+  }
+  return m;
+}
+
+namespace {
+
+// Every coefficient, RGB and spectral, multiplied by `factor`.
+AtmosphereModel with_coefficients_scaled(AtmosphereModel m, double factor) {
+  return with_absorption_scaled(with_scattering_scaled(std::move(m), factor), factor);
+}
+
+// A profile whose heights are `factor` times as large.
+DensityProfile stretched(DensityProfile p, double factor) {
+  for (DensityLayer& l : p.layers) {
+    l.width *= factor;
+    l.exp_scale /= factor;
+    l.linear_term /= factor;
+  }
+  return p;
+}
+
+// The integral of an exponential layer exp(-h / H) from 0 to `thickness`.
+double column(double scale_height, double thickness) {
+  return -scale_height * std::expm1(-thickness / scale_height);
+}
+
+}  // namespace
+
+AtmosphereModel with_bottom_radius(AtmosphereModel m, double bottom_radius,
+                                   bool absolute_thickness) {
+  double thickness = m.top_radius - m.bottom_radius;
+  if (absolute_thickness) {
+    m.bottom_radius = bottom_radius;
+    m.top_radius = bottom_radius + thickness;
+    return m;
+  }
+  double k = bottom_radius / m.bottom_radius;
+  m = with_coefficients_scaled(std::move(m), 1.0 / k);
+  m.bottom_radius = bottom_radius;
+  m.top_radius = bottom_radius + k * thickness;
+  for (AtmosphereComponent* c : {&m.rayleigh, &m.mie, &m.absorber}) {
+    c->density = stretched(c->density, k);
+  }
+  return m;
+}
+
+AtmosphereModel with_scale_heights_scaled(AtmosphereModel m, double factor) {
+  double thickness = m.top_radius - m.bottom_radius;
+  for (AtmosphereComponent* c : {&m.rayleigh, &m.mie}) {
+    DensityLayer& l = c->density.layers[1];
+    if (l.exp_term == 0.0 || l.exp_scale >= 0.0) continue;  // not an exponential
+    double H = -1.0 / l.exp_scale;
+    double keep = column(H, thickness) / column(factor * H, thickness);
+    l.exp_scale /= factor;
+    c->scattering *= keep;
+    c->absorption *= keep;
+    if (m.spectrum && c == &m.rayleigh) {
+      for (double& v : m.spectrum->rayleigh_scattering) v *= keep;
+    }
+    if (m.spectrum && c == &m.mie) {
+      for (double& v : m.spectrum->mie_scattering) v *= keep;
+      for (double& v : m.spectrum->mie_absorption) v *= keep;
+    }
+  }
+  return m;
+}
+
 AtmosphereModel parse_atmosphere(JsonObject a) {
   AtmosphereModel m;
   m.bottom_radius = a.number("bottom_radius_m", 1.0, 1e9);

@@ -80,5 +80,21 @@ AtmosphereModel load_atmosphere(const Body& body);
 // The model with its scattering coefficients (Rayleigh and Mie, RGB and
 // spectral) multiplied by `factor`: the dense variants of the scenes.
 AtmosphereModel with_scattering_scaled(AtmosphereModel model, double factor);
+// The same for the absorption coefficients (Mie's and the absorber's).
+AtmosphereModel with_absorption_scaled(AtmosphereModel model, double factor);
+
+// The model on a body of another bottom radius. At the preset's thickness
+// ratio (absolute_thickness false) every length is scaled with the radius,
+// the shell's thickness and the profiles' heights, and the coefficients
+// divided by the same factor, so that every optical depth along a vertical
+// stays as it was: only the curvature changes. At its absolute thickness
+// the shell and its profiles keep their heights in metres.
+AtmosphereModel with_bottom_radius(AtmosphereModel model, double bottom_radius,
+                                   bool absolute_thickness);
+
+// Rayleigh's and Mie's exponential scale heights multiplied by `factor`,
+// their coefficients set so that each one's optical depth from the bottom
+// to the top along a vertical stays as it was.
+AtmosphereModel with_scale_heights_scaled(AtmosphereModel model, double factor);
 
 }  // namespace planet

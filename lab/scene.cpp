@@ -16,13 +16,7 @@ uint64_t Scene::seed() const { return fnv1a(name); }
 
 namespace {
 
-// Where a scene's camera stands and looks, and where the sun is, in the
-// local east-north-up frame of the point below the camera. Angles in degrees.
-struct Placement {
-  double lat_deg = 0, lon_deg = 0, height_m = 2.0;
-  double heading_deg = 0, pitch_deg = 0, vertical_fov_deg = 90;
-  double sun_elevation_deg = 0, sun_azimuth_deg = 0;  // azimuth clockwise from north
-};
+using Placement = ScenePlacement;
 
 Scene make_scene(std::string name, std::string description, std::string body_name,
                  const Placement& p, double exposure) {
@@ -31,7 +25,13 @@ Scene make_scene(std::string name, std::string description, std::string body_nam
   s.description = std::move(description);
   s.body = std::move(body_name);
   s.exposure = exposure;
-  Body body = load_body(find_body_file(s.body));
+  return placed(std::move(s), p);
+}
+
+}  // namespace
+
+Scene placed(Scene s, const ScenePlacement& p) {
+  Body body = scene_body(s);
   Geodesy geodesy(body.shape);
   Geodetic place{glm::radians(p.lat_deg), glm::radians(p.lon_deg), p.height_m};
   s.camera = geodesy.camera_at(place, glm::radians(p.heading_deg), glm::radians(p.pitch_deg),
@@ -40,8 +40,6 @@ Scene make_scene(std::string name, std::string description, std::string body_nam
                                                          glm::radians(p.sun_azimuth_deg)));
   return s;
 }
-
-}  // namespace
 
 std::vector<Scene> canonical_scenes() {
   // Ground skies: a 90 degree vertical field (127 degrees across at 2:1)
@@ -143,6 +141,11 @@ Scene find_scene(const std::string& name) {
 
 Body scene_body(const Scene& scene) {
   Body body = load_body(find_body_file(scene.body));
+  if (scene.bottom_radius && body.has_atmosphere()) {
+    // The whole body scaled with its atmosphere's bottom, its shape kept.
+    double bottom = body.atmosphere.at("bottom_radius_m").get<double>();
+    body.shape.equatorial_radius *= *scene.bottom_radius / bottom;
+  }
   // The ground truth's ground is the smooth bottom sphere, Lambertian with
   // the model's albedo. So that a technique is judged on its sky and not on
   // the terrain, the frame draws the same ground: the body's relief and
@@ -169,6 +172,13 @@ AtmosphereModel scene_atmosphere(const Scene& scene, const Body& body) {
   AtmosphereModel model = load_atmosphere(body);
   if (scene.scattering_scale != 1.0) model = with_scattering_scaled(model, scene.scattering_scale);
   if (scene.mie_g) model.mie_g = *scene.mie_g;
+  if (scene.absorption_scale != 1.0) model = with_absorption_scaled(model, scene.absorption_scale);
+  if (scene.scale_height_scale != 1.0) {
+    model = with_scale_heights_scaled(model, scene.scale_height_scale);
+  }
+  if (scene.bottom_radius) {
+    model = with_bottom_radius(model, *scene.bottom_radius, scene.absolute_thickness);
+  }
   return model;
 }
 

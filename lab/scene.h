@@ -26,6 +26,13 @@ struct Scene {
   // and a replaced Mie asymmetry (strong forward scattering).
   double scattering_scale = 1.0;
   std::optional<double> mie_g;
+  // The stability map's variants (lab/stability.h): absorption multiplied,
+  // the body at another bottom radius (model.h, with_bottom_radius), the
+  // scale heights stretched (with_scale_heights_scaled).
+  double absorption_scale = 1.0;
+  std::optional<double> bottom_radius;  // metres
+  bool absolute_thickness = false;
+  double scale_height_scale = 1.0;
   Camera camera;
   glm::dvec3 sun_dir_body{0.0, 0.0, 1.0};
   int width = 128, height = 64;
@@ -38,6 +45,18 @@ struct Scene {
   // Seeds the path tracer's random streams: a hash of the name.
   uint64_t seed() const;
 };
+
+// Where a scene's camera stands and looks, and where the sun is, in the
+// local east-north-up frame of the point below the camera. Angles in
+// degrees, the height above the body's ellipsoid in metres.
+struct ScenePlacement {
+  double lat_deg = 0, lon_deg = 0, height_m = 2.0;
+  double heading_deg = 0, pitch_deg = 0, vertical_fov_deg = 90;
+  double sun_elevation_deg = 0, sun_azimuth_deg = 0;  // azimuth clockwise from north
+};
+// The scene's camera and sun set from a placement on its body (scene_body:
+// at its variant's radius).
+Scene placed(Scene scene, const ScenePlacement& placement);
 
 // Every canonical scene, at its default size (128x64).
 std::vector<Scene> canonical_scenes();

@@ -1,0 +1,138 @@
+#include "lab/stability.h"
+
+#include "atmosphere/gpu/registry.h"
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "core/tone_map.h"
+#include "lab/accuracy.h"
+#include "lab/reference_cache.h"
+#include "lab/scene_render.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+
+namespace planet {
+
+namespace {
+
+std::optional<StabilityResult> read_result(const std::filesystem::path& file) {
+  if (!std::filesystem::exists(file)) return std::nullopt;
+  std::ifstream in(file);
+  nlohmann::json j;
+  try {
+    in >> j;
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(fmt::format("{}: not a cell of planet lab stability ({}); delete it or run "
+                                 "with --redo",
+                                 file.string(), e.what()));
+  }
+  StabilityResult r = result_from_json(j, file.string());
+  r.kept = true;
+  return r;
+}
+
+std::string choice_of(const std::string& technique, const std::string& quality) {
+  for (const auto& [name, settings] : technique_entry(technique).quality_points) {
+    if (name == quality) return settings.empty() ? technique : technique + ":" + settings;
+  }
+  return technique;
+}
+
+StabilityResult run_point(const StabilityCell& cell, const std::string& technique,
+                          const std::string& quality, const std::optional<ReferenceRender>& truth,
+                          const StabilityOptions& o) {
+  std::string choice = choice_of(technique, quality);
+  StabilityResult r;
+  auto start = std::chrono::steady_clock::now();
+  try {
+    ImageRGB image = render_scene_with(cell.scene, choice);
+    r = classify(cell.scene, image, truth ? &truth->image : nullptr,
+                 truth ? &truth->noise : nullptr, o.budget_percent);
+    ImageRGB shown = image;
+    for (float& v : shown.pixels) v = std::isfinite(v) ? v : 0.0f;  // NaN drawn black
+    write_tone_mapped_png(stability_result_file(o, cell.scene.name, technique, quality)
+                              .replace_extension(".png"),
+                          enlarged(shown), cell.scene.exposure);
+  } catch (const std::exception& e) {
+    r.cls = StabilityClass::kFailed;
+    r.reason = e.what();
+  }
+  r.render_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (r.cls != StabilityClass::kFailed && r.render_s > o.time_limit_s) {
+    r.cls = StabilityClass::kFailed;
+    r.reason = fmt::format("took {:.0f} s, over the {:g} s limit", r.render_s, o.time_limit_s);
+  }
+  r.cell = cell.scene.name;
+  r.body = cell.body;
+  r.technique = technique;
+  r.quality = quality;
+  r.choice = choice;
+  r.point = cell.point;
+  r.slices = cell.slices;
+  return r;
+}
+
+}  // namespace
+
+std::vector<StabilityResult> run_stability(
+    const StabilityOptions& o, const std::vector<StabilityCell>& cells,
+    const std::function<void(int, int, const std::string&)>& progress) {
+  auto points = stability_points(o.techniques);
+  const int total = int(cells.size() * points.size());
+  int done = 0;
+  for (const StabilityCell& cell : cells) {
+    std::vector<std::optional<StabilityResult>> kept;
+    bool all_kept = true;
+    for (const auto& [technique, quality] : points) {
+      kept.push_back(o.redo ? std::nullopt
+                            : read_result(stability_result_file(o, cell.scene.name, technique, quality)));
+      all_kept = all_kept && kept.back().has_value();
+    }
+    if (all_kept) {
+      done += int(points.size());
+      continue;
+    }
+    if (progress) progress(done, total, cell.scene.name + ": its ground truth");
+    std::filesystem::path dir = o.out / "cells" / cell.scene.name;
+    std::filesystem::create_directories(dir);
+    // Inside the planet there is none: the tracer's medium ends at the ground.
+    std::optional<ReferenceRender> truth;
+    if (cell.point.altitude_m >= 0) {
+      truth = reference_render(cell.scene, stability_reference_budget(cell));
+      write_tone_mapped_png(dir / "reference.png", enlarged(truth->image), cell.scene.exposure);
+    }
+    for (size_t i = 0; i < points.size(); ++i) {
+      const auto& [technique, quality] = points[i];
+      if (progress) progress(done, total, fmt::format("{} {}:{}", cell.scene.name, technique, quality));
+      if (!kept[i]) {
+        StabilityResult r = run_point(cell, technique, quality, truth, o);
+        write_file_atomically(stability_result_file(o, cell.scene.name, technique, quality),
+                              result_to_json(r).dump(2) + "\n");
+      }
+      ++done;
+    }
+  }
+  if (progress) progress(done, total, "");
+
+  // Every shard's results that are there, in the plan's order.
+  std::vector<StabilityResult> results;
+  std::set<std::string> seen;
+  std::error_code ec;
+  std::vector<std::filesystem::path> files;
+  for (auto it = std::filesystem::recursive_directory_iterator(o.out / "cells", ec);
+       !ec && it != std::filesystem::recursive_directory_iterator(); it.increment(ec)) {
+    if (it->path().extension() == ".json") files.push_back(it->path());
+  }
+  std::sort(files.begin(), files.end());
+  for (const auto& f : files) {
+    if (auto r = read_result(f)) results.push_back(*r);
+  }
+  write_stability_tables(o, results);
+  return results;
+}
+
+}  // namespace planet
