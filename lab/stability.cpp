@@ -128,7 +128,7 @@ const std::vector<std::string>& stability_bodies() {
 std::vector<StabilityAxis> stability_axes(const std::string& body) {
   (void)body;
   return {
-      {"density", "density scale (scattering and absorption) x", {0.1, 0.3, 3, 10, 50, 100}},
+      {"density", "density scale (scattering and absorption) x", {0.1, 0.3, 3, 10, 20, 30, 50, 100}},
       {"g", "Mie asymmetry g", {-0.5, 0, 0.5, 0.9, 0.95, 0.99}},
       {"radius", "bottom radius (m), at the preset's thickness ratio", {1e4, 1e5, 1e6, 1e7, 7e7}},
       {"radius_absolute", "bottom radius (m), at the preset's thickness", {1e4, 1e5, 1e6, 1e7, 7e7}},
@@ -183,6 +183,12 @@ std::vector<std::pair<std::string, std::string>> stability_points(
     const std::vector<std::string>& techniques) {
   std::vector<std::pair<std::string, std::string>> points;
   for (const std::string& t : techniques.empty() ? technique_names() : techniques) {
+    if (auto colon = t.find(':'); colon != std::string::npos) {
+      // A choice of one's own, "bruneton:orders=20": that point alone.
+      parse_technique(t);  // InputError for a name or setting it does not know
+      points.emplace_back(t.substr(0, colon), t.substr(colon + 1));
+      continue;
+    }
     const TechniqueEntry& entry = technique_entry(t);  // InputError naming the known ones
     std::string cheapest = "default";
     for (const auto& [name, settings] : entry.quality_points) {

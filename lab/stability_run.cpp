@@ -39,7 +39,7 @@ std::string choice_of(const std::string& technique, const std::string& quality) 
   for (const auto& [name, settings] : technique_entry(technique).quality_points) {
     if (name == quality) return settings.empty() ? technique : technique + ":" + settings;
   }
-  return technique;
+  return technique + ":" + quality;  // a choice of one's own (stability_points)
 }
 
 StabilityResult run_point(const StabilityCell& cell, const std::string& technique,

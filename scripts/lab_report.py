@@ -10,7 +10,9 @@ everything in it (the charts and images inline, no network): the charts,
 a sentence per scene naming the cheapest technique within 1, 2 and 5 %, the
 table of cells, and the technique / ground truth / error images of every
 point on a front; and OUT/orders.{png,svg}: each (technique, quality)'s
-error split into its first order and the orders above it.
+error split into its first order and the orders above it. Where
+OUT/stability holds planet lab stability's report, the page links it and
+shows its line plots.
 """
 import base64
 import html
@@ -224,6 +226,17 @@ def main():
         parts.append("<p>" + "; ".join(
             f'{e(p["technique"])}:{e(p["quality"])} {percent(p["single"])} % and '
             f'{percent(p["higher"])} %' for p in split) + ".</p>")
+    stability = os.path.join(out, "stability")
+    if os.path.exists(os.path.join(stability, "report.html")):
+        parts.append("<h2>Where each technique breaks</h2><p>The stability map "
+                     "(<code>planet lab stability</code>, its own report in "
+                     "<a href=\"stability/report.html\">stability/report.html</a>, its tables "
+                     "in stability/stability.csv and .json): each technique's error along "
+                     "each axis around each body.</p>")
+        for body in ("earth", "mars", "asteroid"):
+            lines = os.path.join(stability, f"lines_{body}.png")
+            if os.path.exists(lines):
+                parts.append(f'<div class="chart">{inline_png(lines)}</div>')
     for scene in scenes:
         here = [c for c in cells if c["scene"] == scene]
         parts.append(f"<h2>{e(scene)}</h2>")

@@ -32,7 +32,7 @@ COLOURS = {"ok": "#4caf50", "inaccurate": "#ffb74d", "nan": "#c2185b", "exploded
            "failed": "#616161"}
 FLOOR = 1e-3  # errors below it drawn at it (a log axis has no 0): 0.1 %
 PLANES = {
-    "density_g": ("density", "mie_g", "density x", "Mie g"),
+    "density_g": ("density", "mie_g", "density scale", "Mie g"),
     "radius_altitude": ("bottom_radius_m", "altitude_m", "bottom radius (m)", "camera altitude (m)"),
 }
 LOG_AXES = {"density", "radius", "radius_absolute", "scale_height", "altitude"}
@@ -158,7 +158,7 @@ def heat_maps(data, body, plane, stem):
     handles = [plt.Rectangle((0, 0), 1, 1, color=COLOURS[c]) for c in CLASSES]
     fig.legend(handles, CLASSES, loc="lower center", ncol=5, fontsize=8, frameon=False,
                bbox_to_anchor=(0.5, -0.02))
-    fig.suptitle(f"{body}: {x_label} x {y_label}; text: the worst channel's debiased error, % "
+    fig.suptitle(f"{body}: {x_label} by {y_label}; text: the worst channel's debiased error, % "
                  f"(budget {data['budget_percent']:g} %)", fontsize=9)
     fig.tight_layout(rect=(0, 0.03, 1, 0.97))
     finish(fig, stem)

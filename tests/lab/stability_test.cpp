@@ -85,8 +85,9 @@ TEST(StabilityPlanTest, EveryCellIsOneViewNamedForWhatItChanges) {
     EXPECT_EQ(c.scene.width, kStabilityWidth);
     EXPECT_EQ(c.scene.height, kStabilityHeight);
   }
-  // 3 bodies x (the preset, 45 one-axis values, 16 + 20 on the planes).
-  EXPECT_EQ(cells.size(), 3u * 78u);
+  // 3 bodies x (the preset, 47 one-axis values, 16 + 20 on the planes, of
+  // which the plane's density 10 and 100 at no other g are not new: none).
+  EXPECT_EQ(cells.size(), 3u * 80u);
   EXPECT_TRUE(names.count("stability-earth-d50"));
   EXPECT_TRUE(names.count("stability-mars-g0.99"));
   EXPECT_TRUE(names.count("stability-asteroid-r7e7-z1e8"));
