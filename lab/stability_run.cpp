@@ -35,17 +35,11 @@ std::optional<StabilityResult> read_result(const std::filesystem::path& file) {
   return r;
 }
 
-std::string choice_of(const std::string& technique, const std::string& quality) {
-  for (const auto& [name, settings] : technique_entry(technique).quality_points) {
-    if (name == quality) return settings.empty() ? technique : technique + ":" + settings;
-  }
-  return technique + ":" + quality;  // a choice of one's own (stability_points)
-}
-
 StabilityResult run_point(const StabilityCell& cell, const std::string& technique,
                           const std::string& quality, const std::optional<ReferenceRender>& truth,
                           const StabilityOptions& o) {
-  std::string choice = choice_of(technique, quality);
+  // A quality point's name or settings of one's own: parse_technique reads both.
+  std::string choice = quality == "default" ? technique : technique + ":" + quality;
   StabilityResult r;
   auto start = std::chrono::steady_clock::now();
   try {

@@ -59,22 +59,50 @@ const FirstOrderCase kCases[] = {
 };
 // clang-format on
 
+// O'Neil's scale function hard-coded for Earth's 25 % / 2.5 % ratio (the
+// chapter's polynomial), a known failure the stability map pins: on Mars
+// and the asteroid its single scattering is several times the fitted
+// one's error. Held from both sides, so that a change that moves it is seen.
+// clang-format off
+const FirstOrderCase kPinnedFailures[] = {
+    {"oneil:scale=chapter", "mars_noon", {8.72, 7.6, 7.08}},
+    {"oneil:scale=chapter", "asteroid_surface", {28.2, 37.4, 42.4}},
+};
+// clang-format on
+
+// Relative RMSE per channel in %, printed as a row of the tables above.
+std::array<double, 3> first_order_error(const FirstOrderCase& c) {
+  Scene scene = find_scene(c.scene);
+  scene.width = 32;
+  scene.height = 16;
+  scene.max_order = 1;
+  ImageRGB reference = reference_image(scene, PathBudget(65536));
+  TechniqueAccuracy accuracy =
+      measure_accuracy(scene, render_first_order_with(scene, c.technique), reference);
+  std::array<double, 3> e;
+  for (int k = 0; k < 3; ++k) e[k] = 100 * accuracy.channels[k].relative();
+  std::printf("    {\"%s\", \"%s\", {%.3g, %.3g, %.3g}},\n", c.technique, c.scene, e[0], e[1],
+              e[2]);
+  return e;
+}
+
 TEST(FirstOrderGLTest, EachTechniquesSingleScatteringMatchesTheGroundTruthsFirstOrder) {
   auto context = GlContext::create_headless();
   for (const FirstOrderCase& c : kCases) {
-    Scene scene = find_scene(c.scene);
-    scene.width = 32;
-    scene.height = 16;
-    scene.max_order = 1;
-    ImageRGB reference = reference_image(scene, PathBudget(65536));
-    TechniqueAccuracy accuracy =
-        measure_accuracy(scene, render_first_order_with(scene, c.technique), reference);
-    std::printf("    {\"%s\", \"%s\", {%.3g, %.3g, %.3g}},\n", c.technique, c.scene,
-                100 * accuracy.channels[0].relative(), 100 * accuracy.channels[1].relative(),
-                100 * accuracy.channels[2].relative());
+    std::array<double, 3> e = first_order_error(c);
     for (int k = 0; k < 3; ++k) {
-      EXPECT_LE(100 * accuracy.channels[k].relative(), allowed_percent(c.today[k]))
-          << c.technique << " " << c.scene << " " << "RGB"[k];
+      EXPECT_LE(e[k], allowed_percent(c.today[k])) << c.technique << " " << c.scene << " " << "RGB"[k];
+    }
+  }
+}
+
+TEST(FirstOrderGLTest, TheChaptersScaleFunctionFailsOffEarthsRatio) {
+  auto context = GlContext::create_headless();
+  for (const FirstOrderCase& c : kPinnedFailures) {
+    std::array<double, 3> e = first_order_error(c);
+    for (int k = 0; k < 3; ++k) {
+      EXPECT_LE(e[k], allowed_percent(c.today[k])) << c.technique << " " << c.scene << " " << "RGB"[k];
+      EXPECT_GE(e[k], 0.8 * c.today[k] - 0.2) << c.technique << " " << c.scene << " " << "RGB"[k];
     }
   }
 }
