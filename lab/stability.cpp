@@ -164,7 +164,11 @@ Scene stability_scene(const std::string& body, const StabilityPoint& p, int widt
   place.sun_elevation_deg = p.sun_elevation_deg;
   place.sun_azimuth_deg = 30.0;
   if (alpha >= 45.0) {
-    place.pitch_deg = 35.0 - (90.0 - alpha);
+    // The horizon kept where it is from the ground, 35 degrees below the
+    // middle, as it dips: from the top of the air, the sky above is black
+    // and the light is at the limb.
+    double dip = glm::degrees(std::acos(std::min(1.0, bottom / (bottom + std::max(p.altitude_m, 0.0)))));
+    place.pitch_deg = 35.0 - dip;
     place.vertical_fov_deg = 90.0;
   } else {
     place.pitch_deg = -90.0;

@@ -56,7 +56,7 @@ const std::vector<std::string>& stability_bodies();
 
 // The view of a cell: from the ground up, the preset's sky (pitched 35
 // degrees up, a 90 degree field, the sun 30 degrees to the right); from
-// higher, pitched down as the limb sinks; from far enough that the shell
+// higher, pitched down as the horizon dips; from far enough that the shell
 // fills less than 90 degrees, the whole disc, centred.
 Scene stability_scene(const std::string& body, const StabilityPoint& point, int width, int height);
 
