@@ -216,9 +216,27 @@ def line_plots(data, body, stem):
     finish(fig, stem)
 
 
-def span(values):
-    """Sorted axis values as runs: '0.1 to 10'."""
-    return f"{values[0]:g} to {values[-1]:g}" if len(values) > 1 else f"{values[0]:g}"
+def number(v):
+    """1e+09 as 1e9, 10000 as 1e4."""
+    text = f"{v:g}"
+    if abs(v) >= 1e4 and "e" not in text:
+        text = f"{v:.0e}"
+    return text.replace("e+0", "e").replace("e+", "e").replace("e-0", "e-")
+
+
+def runs(values, holding):
+    """The holding values as runs between breaks: '0.1 to 10 and 30'."""
+    out, run = [], []
+    for v in values:
+        if v in holding:
+            run.append(v)
+        elif run:
+            out.append(run)
+            run = []
+    if run:
+        out.append(run)
+    return " and ".join(
+        f"{number(r[0])} to {number(r[-1])}" if len(r) > 1 else number(r[0]) for r in out)
 
 
 def describe(data, body, technique, quality):
@@ -236,12 +254,15 @@ def describe(data, body, technique, quality):
         axis = a["name"]
         mine = sorted((r for r in results if axis in r["slices"]),
                       key=lambda r: value(r, axis, preset))
-        holds = [value(r, axis, preset) for r in mine if r["class"] in ("ok", "inaccurate") and
-                 r["worst"] is not None and r["worst"] <= holds_below]
-        breaks = [(value(r, axis, preset), r["class"], r["worst"]) for r in mine
-                  if not (r["class"] in ("ok", "inaccurate") and
-                          (r["worst"] is None or r["worst"] <= holds_below))]
-        out["axes"][axis] = {"holds": holds, "breaks": breaks}
+        # Inside the planet there is no ground truth: an ok there is finite
+        # and not below zero, and holds.
+        held = [r["class"] in ("ok", "inaccurate") and
+                (r["worst"] is None or r["worst"] <= holds_below) for r in mine]
+        holds = [value(r, axis, preset) for r, h in zip(mine, held) if h]
+        breaks = [(value(r, axis, preset), r["class"], r["worst"])
+                  for r, h in zip(mine, held) if not h]
+        out["axes"][axis] = {"values": [value(r, axis, preset) for r in mine], "holds": holds,
+                             "breaks": breaks}
     return out
 
 
@@ -250,14 +271,14 @@ def sentence(info, budget):
     for axis, d in info["axes"].items():
         text = axis.replace("_", " ")
         if d["holds"]:
-            text += f" holds {span(d['holds'])}"
+            text += f" holds {runs(d['values'], set(d['holds']))}"
         if d["breaks"]:
-            text += ("; " if d["holds"] else " ") + "breaks at " + ", ".join(
-                f"{v:g} ({c if c != 'inaccurate' else percent(w) + ' %'})"
+            text += (", " if d["holds"] else " ") + "breaks at " + ", ".join(
+                f"{number(v)} ({c if c != 'inaccurate' else percent(w) + ' %'})"
                 for v, c, w in d["breaks"])
         parts.append(text)
     base = info["preset_error"]
-    lead = (f"preset error {percent(base)} %; holding means within "
+    lead = (f"error at the preset {percent(base)} %, held within "
             f"{percent(info['holds_below'])} %" if base is not None else "")
     return lead + ": " + "; ".join(parts) + "."
 
