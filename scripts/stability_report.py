@@ -35,7 +35,7 @@ PLANES = {
     "density_g": ("density", "mie_g", "density scale", "Mie g"),
     "radius_altitude": ("bottom_radius_m", "altitude_m", "bottom radius (m)", "camera altitude (m)"),
 }
-LOG_AXES = {"density", "radius", "radius_absolute", "scale_height", "altitude"}
+LOG_AXES = {"density", "radius", "radius_absolute", "scale_height", "altitude"}  # altitude > 0
 
 
 def load(out):
@@ -82,7 +82,7 @@ def axis_label(axis, preset):
         "radius": "bottom radius (m), thickness ratio kept",
         "radius_absolute": "bottom radius (m), thickness kept",
         "scale_height": "Rayleigh scale height / thickness",
-        "altitude": "camera altitude (m; < 0 inside)",
+        "altitude": "camera altitude (m)",
         "sun": "sun elevation (deg)",
     }[axis]
 
@@ -182,7 +182,9 @@ def line_plots(data, body, stem):
         for t_index, technique in enumerate(techniques):
             for quality in [q for t, q in pts if t == technique]:
                 mine = sorted((r for r in here if r["technique"] == technique and
-                               r["quality"] == quality), key=lambda r: value(r, axis, preset))
+                               r["quality"] == quality and
+                               not (axis == "altitude" and r["point"]["altitude_m"] < 0)),
+                              key=lambda r: value(r, axis, preset))
                 xs = [value(r, axis, preset) for r in mine if r["worst"] is not None]
                 ys = [max(r["worst"], FLOOR) for r in mine if r["worst"] is not None]
                 style = "-" if quality == "default" else "--"
@@ -196,8 +198,15 @@ def line_plots(data, body, stem):
         ax.axhline(budget, color="black", linestyle=":", linewidth=1)
         ax.set_yscale("log")
         if axis in LOG_AXES:
-            ax.set_xscale("symlog" if axis == "altitude" else "log",
-                          **({"linthresh": 1.0} if axis == "altitude" else {}))
+            ax.set_xscale("log")
+        inside = [r for r in here if axis == "altitude" and r["point"]["altitude_m"] < 0]
+        if inside:
+            # No ground truth inside the planet: its classes in words.
+            bad = [f'{r["technique"]}:{r["quality"]} {r["class"]}' for r in inside
+                   if r["class"] != "ok"]
+            ax.text(0.02, 0.02, f"inside the planet ({number(inside[0]['point']['altitude_m'])} m): "
+                    + (", ".join(bad) if bad else "every point finite and not below zero"),
+                    transform=ax.transAxes, fontsize=6, va="bottom")
         ax.axvline(value({"point": {"density": 1, "mie_g": None, "bottom_radius_m": None,
                                     "scale_height": 1, "altitude_m": 2, "sun_elevation_deg": 60}},
                          axis, preset), color="grey", linewidth=0.6)
