@@ -164,10 +164,12 @@ Scene stability_scene(const std::string& body, const StabilityPoint& p, int widt
   place.sun_elevation_deg = p.sun_elevation_deg;
   place.sun_azimuth_deg = 30.0;
   if (alpha >= 45.0) {
-    // The horizon kept where it is from the ground, 35 degrees below the
-    // middle, as it dips: from the top of the air, the sky above is black
-    // and the light is at the limb.
-    double dip = glm::degrees(std::acos(std::min(1.0, bottom / (bottom + std::max(p.altitude_m, 0.0)))));
+    // Above the lowest hundredth of the air, the horizon kept where it is
+    // from the ground, 35 degrees below the middle, as it dips: from the
+    // top of the air the sky above is black and the light is at the limb.
+    double dip = p.altitude_m > 0.01 * (top - bottom)
+                     ? glm::degrees(std::acos(bottom / (bottom + p.altitude_m)))
+                     : 0.0;
     place.pitch_deg = 35.0 - dip;
     place.vertical_fov_deg = 90.0;
   } else {
