@@ -237,6 +237,12 @@ void accumulate_segment(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, Rea
       }
       if (source_kind == kSourceSky) {
         source += scattered_field(atmosphere, false, r, mu_s, sigma_r, sigma_m, p, d, sun_dir);
+        // The glow's gain and the field's moments are truncated series:
+        // where the light is peaked more than they hold (Mie g 0.99) they
+        // ring below zero, and no light is less than none (the stability
+        // map found Mars at g 0.99, 0.1x density, 0.08 % of the sun below
+        // zero).
+        source = max(source, Real3(0.0));
       }
     }
   }
