@@ -58,7 +58,7 @@ StabilityResult run_point(const StabilityCell& cell, const std::string& techniqu
   r.render_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   if (r.cls != StabilityClass::kFailed && r.render_s > o.time_limit_s) {
     r.cls = StabilityClass::kFailed;
-    r.reason = fmt::format("took {:.0f} s, over the {:g} s limit", r.render_s, o.time_limit_s);
+    r.reason = fmt::format("took {:.3g} s, over the {:g} s limit", r.render_s, o.time_limit_s);
   }
   r.cell = cell.scene.name;
   r.body = cell.body;

@@ -292,6 +292,30 @@ def sentence(info, budget):
     return lead + ": " + "; ".join(parts) + "."
 
 
+# Why the edges lie where they do, from the order-resolved ground truth
+# and the experiments the README gives (The stability map): each shown
+# under its technique's text.
+CAUSES = {
+    "hillaire": "Dense air: its first order holds (0.17 / 0.04 / 0.0 % against the ground truth's "
+                "first order at 50x), the orders above it do not: six orders and a geometric tail "
+                "whose ratio is held at 0.9 cannot carry light hundreds of scatterings deep (held "
+                "at 0.999 the tail overshoots green 30-fold). Mars's dust at g 0.9 and above, and "
+                "Mars at sunset: the orders' field is held to degree 4 about the zenith and the "
+                "sun, which cannot follow light that peaked along long paths.",
+    "bruneton": "Dense air: its 4 orders (20 still miss blue at 50x); the tail cannot stand in "
+                "for a series whose ratio is near 1. Low sun and the largest bodies at Earth's "
+                "thickness: the 4D table's resolution.",
+    "hillaire2020": "The paper's isotropic series Psi = L2 / (1 - f_ms) misses the orders above "
+                    "the first everywhere; where it explodes, its ground is lit by the frame's "
+                    "sky-light estimate (no table of its own).",
+    "raymarch": "Single scattering: the orders above the first are missing everywhere; where it "
+                "explodes (dense air) its ground is lit by the frame's sky-light estimate, which "
+                "has no attenuation of its own (surface_lighting.glsl).",
+    "oneil": "Single scattering, as raymarch; its scale function fitted to each body (the "
+             "chapter's polynomial holds Earth's ratio alone).",
+}
+
+
 def inline_png(path):
     if not os.path.exists(path):
         return f'<p class="missing">{html.escape(os.path.basename(path))} is missing</p>'
@@ -356,7 +380,10 @@ def main():
                  "first everywhere), and the values where it does not, with the class or the "
                  "error.</p>")
     for technique, quality in pts:
-        parts.append(f"<h3>{e(technique)}:{e(quality)}</h3><ul>")
+        parts.append(f"<h3>{e(technique)}:{e(quality)}</h3>")
+        if technique in CAUSES:
+            parts.append(f"<p><i>Why:</i> {e(CAUSES[technique])}</p>")
+        parts.append("<ul>")
         for body in bodies:
             parts.append(f"<li><b>{e(body)}</b>, "
                          f"{e(sentence(summary[f'{technique}:{quality}'][body], data['budget_percent']))}</li>")

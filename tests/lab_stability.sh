@@ -71,4 +71,11 @@ assert 0.6 < chapter["error"][2] < 1.0, chapter
 assert res[("stability-mars-preset", "raymarch", "default")]["worst"] > 0.3
 assert r["counts"]["inaccurate"] == 6, r["counts"]
 PY
+# A draw over the time limit is failed, with the reason.
+"$planet" lab stability --cells stability-mars-preset --techniques raymarch:view_steps=8 \
+  --time-limit 0.000001 --out "$work/slow" --no-report --quiet > "$work/slow.txt" 2>&1 ||
+  fail "the timed-out sweep failed: $(cat "$work/slow.txt")"
+grep -q "1 failed" "$work/slow.txt" || fail "no draw failed over the time limit: $(cat "$work/slow.txt")"
+grep -q "over the 1e-06 s limit" "$work/slow/stability.csv" ||
+  fail "the failed draw does not say why: $(cat "$work/slow/stability.csv")"
 exit "$failed"
