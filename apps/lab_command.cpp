@@ -158,6 +158,7 @@ void run_stability_command(StabilityArgs& args) {
   o.out = args.out;
   std::tie(o.shard, o.shards) = parse_shard(args.shard);
   std::vector<StabilityCell> all = plan_stability(o);
+  stability_points(o.techniques);  // an unknown technique or setting fails here, before any work
   if (args.list) {
     for (const StabilityCell& c : all) {
       std::string slices;

@@ -1,6 +1,5 @@
 #include "lab/stability.h"
 
-#include "atmosphere/gpu/registry.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/tone_map.h"
@@ -185,30 +184,6 @@ std::filesystem::path stability_result_file(const StabilityOptions& o, const std
   return o.out / "cells" / cell / (technique + "-" + quality + ".json");
 }
 
-std::vector<std::pair<std::string, std::string>> stability_points(
-    const std::vector<std::string>& techniques) {
-  std::vector<std::pair<std::string, std::string>> points;
-  for (const std::string& t : techniques.empty() ? technique_names() : techniques) {
-    if (auto colon = t.find(':'); colon != std::string::npos) {
-      // A choice of one's own, "bruneton:orders=20": that point alone.
-      parse_technique(t);  // InputError for a name or setting it does not know
-      points.emplace_back(t.substr(0, colon), t.substr(colon + 1));
-      continue;
-    }
-    const TechniqueEntry& entry = technique_entry(t);  // InputError naming the known ones
-    std::string cheapest = "default";
-    for (const auto& [name, settings] : entry.quality_points) {
-      if (name == "cheap") cheapest = name;
-    }
-    if (cheapest == "default" && !entry.quality_points.empty()) {
-      cheapest = entry.quality_points.front().first;
-    }
-    points.emplace_back(t, "default");
-    if (cheapest != "default") points.emplace_back(t, cheapest);
-  }
-  return points;
-}
-
 std::vector<StabilityCell> plan_stability(const StabilityOptions& o) {
   if (!(o.budget_percent > 0 && o.budget_percent < 1000)) {
     throw InputError(fmt::format("lab stability --budget: {} is not a percentage above 0",
@@ -222,7 +197,6 @@ std::vector<StabilityCell> plan_stability(const StabilityOptions& o) {
     throw InputError(fmt::format("lab stability --shard: {}/{} is not K/N with 1 <= K <= N",
                                  o.shard, o.shards));
   }
-  stability_points(o.techniques);  // unknown names fail here
   std::vector<std::string> bodies = o.bodies.empty() ? stability_bodies() : o.bodies;
   for (const std::string& b : bodies) {
     const auto& known = stability_bodies();

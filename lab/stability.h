@@ -92,7 +92,10 @@ struct StabilityResult {
 };
 
 // The (technique, quality) points the map draws: each technique at its
-// default and at its cheapest quality point (the first the registry lists).
+// default and at its cheapest quality point (the first the registry lists);
+// InputError for a name or setting the registry does not know. In
+// planet_lab_gpu with the registry, as run_stability; the rest of this
+// header is planet_lab's, on the CPU.
 std::vector<std::pair<std::string, std::string>> stability_points(
     const std::vector<std::string>& techniques);
 
@@ -102,7 +105,9 @@ std::filesystem::path stability_result_file(const StabilityOptions& options,
                                             const std::string& quality);
 
 // Every cell of the map (one per distinct view; a cell on several slices
-// lists each), in order: bodies, then slices. Checks names first.
+// lists each), in order: bodies, then slices. Checks the bodies, the
+// budget, the time limit and the shard first (stability_points checks the
+// techniques).
 std::vector<StabilityCell> plan_stability(const StabilityOptions& options);
 // This shard's cells.
 std::vector<StabilityCell> shard_cells(const std::vector<StabilityCell>& cells, int shard,

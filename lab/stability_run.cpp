@@ -17,6 +17,30 @@
 
 namespace planet {
 
+std::vector<std::pair<std::string, std::string>> stability_points(
+    const std::vector<std::string>& techniques) {
+  std::vector<std::pair<std::string, std::string>> points;
+  for (const std::string& t : techniques.empty() ? technique_names() : techniques) {
+    if (auto colon = t.find(':'); colon != std::string::npos) {
+      // A choice of one's own, "bruneton:orders=20": that point alone.
+      parse_technique(t);  // InputError for a name or setting it does not know
+      points.emplace_back(t.substr(0, colon), t.substr(colon + 1));
+      continue;
+    }
+    const TechniqueEntry& entry = technique_entry(t);  // InputError naming the known ones
+    std::string cheapest = "default";
+    for (const auto& [name, settings] : entry.quality_points) {
+      if (name == "cheap") cheapest = name;
+    }
+    if (cheapest == "default" && !entry.quality_points.empty()) {
+      cheapest = entry.quality_points.front().first;
+    }
+    points.emplace_back(t, "default");
+    if (cheapest != "default") points.emplace_back(t, cheapest);
+  }
+  return points;
+}
+
 namespace {
 
 std::optional<StabilityResult> read_result(const std::filesystem::path& file) {

@@ -116,9 +116,6 @@ TEST(StabilityPlanTest, ShardsSplitTheCellsWithoutOverlapOrGap) {
 
 TEST(StabilityPlanTest, BadNamesAndValuesFailBeforeAnyWork) {
   StabilityOptions o;
-  o.techniques = {"nishita"};
-  EXPECT_THROW(plan_stability(o), InputError);
-  o = {};
   o.bodies = {"venus"};
   EXPECT_THROW(plan_stability(o), InputError);
   o = {};
