@@ -59,7 +59,7 @@ const FirstOrderCase kCases[] = {
 };
 // clang-format on
 
-// O'Neil's scale function hard-coded for Earth's 25 % / 2.5 % ratio (the
+// O'Neil's scale function fixed to Earth's 25 % / 2.5 % ratio (the
 // chapter's polynomial), a known failure the stability map pins: on Mars
 // and the asteroid its single scattering is several times the fitted
 // one's error. Held from both sides, so that a change that moves it is seen.

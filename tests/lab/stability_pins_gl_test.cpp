@@ -53,7 +53,7 @@ const Pin kPins[] = {
     // The single-scattering techniques in dense air: the frame's estimate of
     // the sky's light on the ground has no attenuation of its own.
     {"stability-earth-d100", "raymarch", StabilityClass::kExploded, {139, 4230, 257}, "100x"},
-    // O'Neil's scale function hard-coded for Earth's 25 % / 2.5 % ratio, on
+    // O'Neil's scale function fixed to Earth's 25 % / 2.5 % ratio, on
     // bodies whose ratios differ, against the one fitted to each body (and
     // their single scattering alone: first_order_gl_test.cpp).
     {"stability-mars-preset", "oneil:scale=chapter", StabilityClass::kInaccurate, {67.7, 47.5, 29.4}, "Mars, chapter"},
