@@ -88,7 +88,6 @@ struct StabilityResult {
   double worst_ratio = 0;                // the largest pixel over its reference's value
   double render_s = 0;                   // the technique's tables and frame
   double reference_noise = 0;            // the reference's noise over its mean, worst channel
-  bool kept = false;
 };
 
 // The (technique, quality) points the map draws: each technique at its

@@ -55,7 +55,6 @@ std::optional<StabilityResult> read_result(const std::filesystem::path& file) {
                                  file.string(), e.what()));
   }
   StabilityResult r = result_from_json(j, file.string());
-  r.kept = true;
   return r;
 }
 
@@ -103,12 +102,13 @@ std::vector<StabilityResult> run_stability(
   const int total = int(cells.size() * points.size());
   int done = 0;
   for (const StabilityCell& cell : cells) {
-    std::vector<std::optional<StabilityResult>> kept;
+    // A draw whose file is there is kept; the files are read once, below.
+    std::vector<bool> kept;
     bool all_kept = true;
     for (const auto& [technique, quality] : points) {
-      kept.push_back(o.redo ? std::nullopt
-                            : read_result(stability_result_file(o, cell.scene.name, technique, quality)));
-      all_kept = all_kept && kept.back().has_value();
+      kept.push_back(!o.redo && std::filesystem::exists(
+                                    stability_result_file(o, cell.scene.name, technique, quality)));
+      all_kept = all_kept && kept.back();
     }
     if (all_kept) {
       done += int(points.size());
