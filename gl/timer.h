@@ -18,6 +18,9 @@ struct PassTiming {
   // timer query may miss: on llvmpipe the vertex shaders and the binning
   // run in the calling thread, and its queries time the rasteriser alone.
   double wall_ms = 0;
+  // The pass did not run: what it would have computed was still valid
+  // from an earlier frame (its inputs had not changed), and was reused.
+  bool reused = false;
 };
 
 class GpuTimer {
@@ -34,6 +37,9 @@ class GpuTimer {
   // Queries do not nest: end one pass before beginning the next.
   void begin(const std::string& pass);
   void end();
+  // Records a pass that did not run this frame because its last result
+  // still held: it is listed, at 0 ms, with `reused` set.
+  void reuse(const std::string& pass);
   // Waits for every pending query and returns the frame's passes in order,
   // then starts over.
   std::vector<PassTiming> collect();
@@ -44,6 +50,7 @@ class GpuTimer {
     GLuint query;
     std::chrono::steady_clock::time_point begun;
     double wall_ms = 0;
+    bool reused = false;  // no query: the pass did not run
   };
   bool synchronous_ = false;
   std::vector<GLuint> free_;

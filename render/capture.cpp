@@ -34,8 +34,17 @@ nlohmann::json sidecar(const FlightScript& script, const FlightPath& path, const
                        const glm::dvec3& sun, const FrameStats& stats,
                        const TerrainStats& terrain) {
   Geodetic g = geodesy.geodetic_from_body(camera.pos_body);
+  // The passes that ran, with their GPU time, and those whose last result
+  // still held and was reused.
   nlohmann::json passes = nlohmann::json::object();
-  for (const auto& p : stats.passes) passes[p.pass] = p.gpu_ms;
+  nlohmann::json reused = nlohmann::json::array();
+  for (const auto& p : stats.passes) {
+    if (p.reused) {
+      reused.push_back(p.pass);
+    } else {
+      passes[p.pass] = p.gpu_ms;
+    }
+  }
   const glm::dquat& q = camera.body_from_camera;
   nlohmann::json j = {
       {"frame", frame},
@@ -53,6 +62,7 @@ nlohmann::json sidecar(const FlightScript& script, const FlightPath& path, const
       {"exposure", exposure},
       {"image", {{"width", script.width}, {"height", script.height}}},
       {"gpu_ms", passes},
+      {"passes_reused", reused},
       {"terrain",
        {{"tiles_drawn", terrain.tiles_drawn},
         {"triangles", terrain.triangles},
@@ -80,12 +90,13 @@ namespace {
 // The sidecar's fields as "planet:" header attributes: nested objects
 // joined with ':', numbers as doubles, three numbers as a vector, anything
 // else as its JSON text. But for those that are not the frame's own: its
-// timings (which differ run to run) and what the tile cache holds (which
-// depends on the frames rendered before it, so on the --frames slice).
+// timings (which differ run to run), and what the tile cache holds and
+// which passes were reused (which depend on the frames rendered before it,
+// so on the --frames slice).
 void add_sidecar_attributes(const nlohmann::json& j, const std::string& prefix,
                             std::vector<ImageAttribute>& out) {
   for (const auto& [key, value] : j.items()) {
-    if (prefix == "planet:" && key == "gpu_ms") continue;
+    if (prefix == "planet:" && (key == "gpu_ms" || key == "passes_reused")) continue;
     if (prefix == "planet:terrain:" && (key == "tiles_resident" || key == "bytes_resident")) {
       continue;
     }

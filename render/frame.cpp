@@ -7,8 +7,10 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
+#include <stdexcept>
 
 namespace planet {
 
@@ -55,6 +57,14 @@ void FrameRenderer::set_body(const Body& body, std::optional<AtmosphereModel> at
   check_gl_errors("FrameRenderer::set_body");
 }
 
+void FrameRenderer::set_atmosphere(const AtmosphereModel& atmosphere) {
+  if (!atmosphere_) throw std::logic_error("set_atmosphere: the body is drawn without air");
+  atmosphere_ = atmosphere;
+  AtmosphereBlock block = make_atmosphere_block(atmosphere);
+  glNamedBufferSubData(atmosphere_block_.id(), 0, sizeof(block), &block);
+  if (technique_) technique_->update(atmosphere);
+}
+
 void FrameRenderer::draw_surfaces(const Camera& camera, const glm::dvec3& sun_dir_body) {
   const float black[4] = {0, 0, 0, 0};
   begin_reversed_z(surface_fbo_.id(), width_, height_, black);
@@ -93,6 +103,18 @@ FrameStats FrameRenderer::render(const Camera& camera, const glm::dvec3& sun_dir
         glm::mat3(atmo_ray_from_ndc(scale, camera, double(width_) / double(height_)));
     sky.sun_dir_atmo = glm::vec3(glm::normalize(scale * sun_dir_body));
     sky.near = float(camera.near);
+    // A lower bound of every distance the technique meets in front of a
+    // surface: the nearest drawn tile, less the depth of the lowest ground
+    // below the ellipsoid (a ray may cross the bottom sphere, where the
+    // technique's air ends, up to that much before it meets a tile in a
+    // hollow), in atmosphere space, which shrinks no distance by more than
+    // its smallest scale.
+    const double lowest = std::min(0.0, terrain_->surface().heights().range().min);
+    sky.atmo_scale_min = float(std::min({scale.x, scale.y, scale.z}));
+    sky.nearest_surface =
+        view_pruning_ ? float(std::max(terrain_stats_.nearest_m + lowest, 0.0) * sky.atmo_scale_min)
+                      : 0.0f;
+    sky.view_pruning = view_pruning_;
     sky.exposure = float(exposure);
     sky.depth_texture = depth_.id();
     sky.surface_texture = surface_.id();

@@ -36,6 +36,11 @@ class FrameRenderer {
   void set_body(const Body& body, std::optional<AtmosphereModel> atmosphere,
                 std::unique_ptr<AtmosphereTechnique> technique);
 
+  // A new model for the body's atmosphere (a slider moved): the technique
+  // takes it, and the next frame shows it. Only for a body drawn with an
+  // atmosphere.
+  void set_atmosphere(const AtmosphereModel& atmosphere);
+
   FrameStats render(const Camera& camera, const glm::dvec3& sun_dir_body, double exposure);
 
   // Terrain settings, taken by the next set_body.
@@ -55,6 +60,12 @@ class FrameRenderer {
   // scattering alone, the frame is the first order, as `reference
   // --max-order 1` traces it.
   void set_surface_sky_light(bool on) { surface_sky_light_ = on; }
+
+  // False: the frame tells the technique nothing that would let it leave
+  // a pass or a pixel out (no surface distance, no screen bound of the
+  // shell), so every pass and pixel is computed: what pruning is checked
+  // against.
+  void set_view_pruning(bool on) { view_pruning_ = on; }
 
   int width() const { return width_; }
   int height() const { return height_; }
@@ -85,6 +96,7 @@ class FrameRenderer {
   TerrainStats terrain_stats_;
   double terrain_wait_s_ = 300.0;
   bool surface_sky_light_ = true;
+  bool view_pruning_ = true;
 
   Body body_;
   std::optional<AtmosphereModel> atmosphere_;

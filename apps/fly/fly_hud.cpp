@@ -3,6 +3,7 @@
 #include <GLFW/glfw3.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
+#include <fmt/format.h>
 #include <imgui.h>
 
 #include <array>
@@ -56,8 +57,13 @@ HudChanges Hud::draw(const HudView& v) {
   ImGui::Text("%.1f m above ground (%.0f m ellipsoid)", v.height_m, v.height_ellipsoid_m);
   ImGui::Text("%.3g m/s  lat %.4f lon %.4f  sun %.1f deg", v.speed_m_s, v.lat_deg, v.lon_deg,
               v.sun_elevation_deg);
-  ImGui::Text("frame %.0f ms  gpu %.1f ms  %s", v.frame_ms, v.gpu_ms, v.technique.c_str());
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("gpu ms:%s", v.passes.c_str());
+  // The frame's rate and cost, and how many of its passes reused an
+  // earlier frame's result; unfolded, each pass's GPU time or "reused".
+  const std::string frame_line =
+      fmt::format("{:.1f} fps  gpu {:.0f} ms  {}  {}/{} reused###passes",
+                  v.frame_ms > 0 ? 1e3 / v.frame_ms : 0.0, v.gpu_ms, v.technique, v.passes_reused,
+                  v.passes_ran + v.passes_reused);
+  if (ImGui::CollapsingHeader(frame_line.c_str())) ImGui::TextUnformatted(v.passes.c_str());
   if (ImGui::CollapsingHeader("settings")) {
     ImGui::PushItemWidth(kItemWidth);
     if (ImGui::BeginCombo("body (B)", v.body.c_str())) {

@@ -16,7 +16,8 @@ struct HudView {
   double height_ellipsoid_m = 0;  // above the body's ellipsoid
   double speed_m_s = 0, lat_deg = 0, lon_deg = 0, sun_elevation_deg = 0;
   double frame_ms = 0, gpu_ms = 0;
-  std::string passes;  // " pass ms pass ms ..."
+  std::string passes;  // one line per pass: its GPU ms, or "reused"
+  int passes_ran = 0, passes_reused = 0;
   std::string body_name, utc;
   bool recording = false;
   bool clock_locked = false;  // recording or scripted: the clock runs on

@@ -202,7 +202,11 @@ HudView FlySession::hud_view(const Camera& cam, const glm::dvec3& sun, double re
   v.lon_deg = glm::degrees(g.lon);
   v.sun_elevation_deg = glm::degrees(sun_angles.elevation);
   v.frame_ms = real_dt * 1e3;
-  for (const auto& p : stats_.passes) v.passes += fmt::format(" {} {:.2f}", p.pass, p.gpu_ms);
+  for (const auto& p : stats_.passes) {
+    v.passes += p.reused ? fmt::format("{:<24} reused\n", p.pass)
+                         : fmt::format("{:<24} {:.2f} ms\n", p.pass, p.gpu_ms);
+    (p.reused ? v.passes_reused : v.passes_ran) += 1;
+  }
   v.gpu_ms = stats_.total_gpu_ms();
   v.body_name = body_.name;
   v.utc = format_utc(clock_.utc());

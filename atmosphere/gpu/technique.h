@@ -31,6 +31,18 @@ struct SkyFrame {
   glm::mat3 atmo_ray_from_ndc{1.0f};
   glm::vec3 sun_dir_atmo{0, 0, 1};
   float near = 0.1f;  // view depth at reversed-Z depth 1
+  // No opaque surface drawn this frame lies nearer to the camera than this
+  // (atmosphere-space metres; +inf when none was drawn); 0 when unknown. A
+  // technique leaves out what serves only surfaces within a range beyond it.
+  float nearest_surface = 0.0f;
+  // The smallest of atmosphere space's scales of the body frame: a distance
+  // d along a ray in atmosphere space is at most d / atmo_scale_min of view
+  // depth.
+  float atmo_scale_min = 1.0f;
+  // False: leave nothing out by view (no pass skipped because no surface
+  // needs it, no pixel because its ray misses the air): what pruning is
+  // checked against.
+  bool view_pruning = true;
   // The frame's tone-mapping exposure, for a technique that maps radiance
   // to display values itself (see writes_display_values).
   float exposure = 1.0f;

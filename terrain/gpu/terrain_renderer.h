@@ -12,6 +12,7 @@
 #include "sim/body.h"
 #include "sim/camera.h"
 
+#include <limits>
 #include <memory>
 #include <unordered_map>
 
@@ -30,6 +31,9 @@ struct TerrainStats {
   int tiles_wanted = 0;     // wanted but not resident when drawn
   double max_error_px = 0;  // largest projected error bound of a drawn tile
   int max_level = 0;
+  // No drawn tile is nearer to the eye than this (the distance to its
+  // bounding sphere), metres; +inf when none was drawn.
+  double nearest_m = std::numeric_limits<double>::infinity();
 };
 
 // What the terrain's shading needs from the frame: the sun and the

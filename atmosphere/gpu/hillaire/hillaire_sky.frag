@@ -21,6 +21,7 @@ layout(binding = 6) uniform sampler3D u_aerial_transmittance;
 
 uniform vec3 u_camera;  // atmosphere space, metres
 uniform float u_camera_r;  // |camera| from double, lifted above the ground
+uniform float u_sky_view_r;  // the radius the sky-view LUT was computed at (rounded)
 uniform mat3 u_ray_from_ndc;
 uniform vec3 u_sun_dir;
 uniform float u_near;
@@ -144,7 +145,7 @@ void main() {
     } else {
       vec3 local = u_local_from_atmo * dir;
       float u, v;
-      sky_view_lut_uv_from_view(atmosphere, u_camera_r, local.z, atan(local.y, local.x), u, v);
+      sky_view_lut_uv_from_view(atmosphere, u_sky_view_r, local.z, atan(local.y, local.x), u, v);
       lut_radiance = texture(u_sky_view_lut, vec2(u, v)).rgb * atmosphere.solar_irradiance;
       if (open_sky) {
         float mu = dot(camera, dir) / length(camera);

@@ -58,6 +58,9 @@ std::vector<std::string> view_defines(const HillaireTechnique::Settings& setting
   return defines;
 }
 
+// Rounds x to the nearest multiple of step (none when step is 0).
+double quantize(double x, double step) { return step > 0.0 ? std::round(x / step) * step : x; }
+
 // One compute pass that fills a whole 2D LUT, one invocation per texel.
 void build_lut(GpuTimer& timer, const char* name, Program& program, const Texture& lut,
                GLenum format, int width, int height) {
@@ -133,27 +136,41 @@ HillaireTechnique::HillaireTechnique(Settings settings)
   if (!settings_.multiple) glClearTexImage(forward_gain_lut_.id(), 0, GL_RED, GL_FLOAT, zero);
   // The sky-view LUT spans the full circle of azimuth: it wraps.
   glTextureParameteri(sky_view_lut_.id(), GL_TEXTURE_WRAP_S, GL_REPEAT);
+  // A frame with no surface within the froxels' range leaves them as they
+  // are, and the sky pass reads them with a weight of zero: never garbage.
+  glClearTexImage(aerial_scattering_.id(), 0, GL_RGBA, GL_FLOAT, zero);
+  glClearTexImage(aerial_transmittance_.id(), 0, GL_RGBA, GL_FLOAT, zero);
 }
 
 void HillaireTechnique::update(const AtmosphereModel& model) {
-  // Only the parameters are kept: every LUT is rebuilt from them each
-  // frame, so a change shows in the next frame with nothing stale.
+  // The parameters and their block, which is every pass's first input: a
+  // change shows in the next frame, with nothing stale.
   model_ = model;
   AtmosphereBlock block = make_atmosphere_block(model);
   glNamedBufferSubData(block_.id(), 0, sizeof(block), &block);
+  model_key_ = PassKey().add(block);
 }
 
 void HillaireTechnique::prepare(GpuTimer& timer) {
   glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, block_.id());
+  prepared_ = true;
+  if (!settings_.reuse_passes) inputs_.forget();
+  // The three tables depend on the model alone (and on the settings, which
+  // a technique keeps for its life).
+  if (!inputs_.changed("model_luts", model_key_)) {
+    timer.reuse("transmittance_lut");
+    if (settings_.multiple) timer.reuse("multiple_scattering_lut");
+    if (settings_.multiple && settings_.multiple_scattering == MultipleScattering::kOrders) {
+      timer.reuse("forward_gain_lut");
+    }
+    return;
+  }
 
   build_lut(timer, "transmittance_lut", transmittance_program_, transmittance_lut_, GL_RGBA32F,
             shared::kTransmittanceLutWidth, shared::kTransmittanceLutHeight);
 
   glBindTextureUnit(2, transmittance_lut_.id());
-  if (!settings_.multiple) {
-    prepared_ = true;
-    return;
-  }
+  if (!settings_.multiple) return;
   timer.begin("multiple_scattering_lut");
   const int w = shared::kMultipleScatteringLutWidth, h = shared::kMultipleScatteringLutHeight;
   if (settings_.multiple_scattering == MultipleScattering::kPaper) {
@@ -186,7 +203,6 @@ void HillaireTechnique::prepare(GpuTimer& timer) {
     build_lut(timer, "forward_gain_lut", forward_gain_program_, forward_gain_lut_, GL_R32F,
               shared::kForwardGainLutWidth, shared::kForwardGainLutHeight);
   }
-  prepared_ = true;
 }
 
 void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
@@ -215,10 +231,27 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   aerial_range_ = std::max(settings_.aerial_range, 4.0 * altitude);
   const glm::dvec3 sun(frame.sun_dir_atmo);
   const glm::dmat3 local = local_from_atmo(camera, sun);
-  const glm::vec3 sun_local(local * sun);
+  // The sky-view LUT's inputs: the altitude and the sun's zenith angle in
+  // the camera's local frame (the LUT puts the sun at azimuth 0), rounded
+  // to their steps. The sky pass maps its directions with the same rounded
+  // altitude, so that LUT and lookup agree.
+  const double lut_altitude = double(lut_r) - bottom;
+  const bool rounded = settings_.reuse_passes;
+  sky_view_altitude_ = std::exp2(quantize(
+      std::log2(lut_altitude), rounded ? settings_.sky_view_log2_altitude_step : 0.0));
+  const float sky_view_r =
+      rounded ? float(std::clamp(bottom + sky_view_altitude_, double(r_min), top)) : lut_r;
+  sky_view_sun_zenith_ =
+      quantize(std::acos(std::clamp((local * sun).z, -1.0, 1.0)),
+               rounded ? glm::radians(settings_.sky_view_sun_zenith_step_deg) : 0.0);
+  const glm::vec3 sun_local =
+      rounded ? glm::vec3(float(std::sin(sky_view_sun_zenith_)), 0.0f,
+                          float(std::cos(sky_view_sun_zenith_)))
+              : glm::vec3(local * sun);
 
   if (!prepared_) prepare(timer);
   prepared_ = false;
+  if (!settings_.reuse_passes) inputs_.forget();
   glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, block_.id());
   glBindTextureUnit(2, transmittance_lut_.id());
   glBindTextureUnit(3, multiple_scattering_lut_.id());
@@ -226,19 +259,42 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
 
   // No sky-view LUT and no froxels where the per-pixel path draws alone
   // (high up, deep space): a frame models no more than it shows.
-  if (lut_weight_ > 0.0) {
+  if (lut_weight_ > 0.0 &&
+      inputs_.changed("sky_view_lut", PassKey(model_key_).add(sky_view_r).add(sun_local))) {
     timer.begin("sky_view_lut");
     sky_view_program_.use();
-    glUniform1f(sky_view_program_.uniform("u_camera_r"), lut_r);
+    glUniform1f(sky_view_program_.uniform("u_camera_r"), sky_view_r);
     glUniform3fv(sky_view_program_.uniform("u_sun_dir_local"), 1, glm::value_ptr(sun_local));
     bind_image(0, sky_view_lut_.id(), GL_RGBA16F, false);
     glDispatchCompute(groups(shared::kSkyViewLutWidth), groups(shared::kSkyViewLutHeight), 1);
     glMemoryBarrier(kLutBarrier);
     timer.end();
+  } else if (lut_weight_ > 0.0) {
+    timer.reuse("sky_view_lut");
+  }
 
+  // The froxels serve surfaces within their range only; none nearer than
+  // it, none to compute. The drawn tiles' bound answers cheaply from high
+  // up; near the ground, where a tile's bound holds the camera, the depth
+  // of the pixels does.
+  const glm::vec3 camera_f(camera);
+  const bool surfaces_in_range =
+      !frame.view_pruning ||
+      (frame.nearest_surface <= aerial_range_ &&
+       (frame.depth_texture == 0 ||
+        surface_probe_.any_nearer(frame.depth_texture, frame.width, frame.height, frame.near,
+                                  float(aerial_range_) / frame.atmo_scale_min)));
+  if (lut_weight_ > 0.0 && surfaces_in_range &&
+      !inputs_.changed("aerial_perspective", PassKey(model_key_)
+                                                 .add(camera_f)
+                                                 .add(frame.atmo_ray_from_ndc)
+                                                 .add(frame.sun_dir_atmo)
+                                                 .add(float(aerial_range_)))) {
+    timer.reuse("aerial_perspective");
+  } else if (lut_weight_ > 0.0 && surfaces_in_range) {
     timer.begin("aerial_perspective");
     aerial_program_.use();
-    glUniform3fv(aerial_program_.uniform("u_camera"), 1, glm::value_ptr(glm::vec3(camera)));
+    glUniform3fv(aerial_program_.uniform("u_camera"), 1, glm::value_ptr(camera_f));
     glUniformMatrix3fv(aerial_program_.uniform("u_ray_from_ndc"), 1, GL_FALSE,
                        glm::value_ptr(frame.atmo_ray_from_ndc));
     glUniform3fv(aerial_program_.uniform("u_sun_dir"), 1, glm::value_ptr(frame.sun_dir_atmo));
@@ -260,6 +316,7 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   glBindTextureUnit(6, aerial_transmittance_.id());
   glUniform3fv(sky_program_.uniform("u_camera"), 1, glm::value_ptr(glm::vec3(frame.camera_atmo)));
   glUniform1f(sky_program_.uniform("u_camera_r"), lut_r);
+  glUniform1f(sky_program_.uniform("u_sky_view_r"), sky_view_r);
   glUniformMatrix3fv(sky_program_.uniform("u_ray_from_ndc"), 1, GL_FALSE,
                      glm::value_ptr(frame.atmo_ray_from_ndc));
   glUniform3fv(sky_program_.uniform("u_sun_dir"), 1, glm::value_ptr(frame.sun_dir_atmo));

@@ -1,8 +1,11 @@
 #pragma once
 // Hillaire 2020, "A Scalable and Production Ready Sky and Atmosphere
 // Rendering Technique": a transmittance LUT, a multiple-scattering LUT, a
-// sky-view LUT at the camera's altitude and aerial-perspective froxels, all
-// recomputed every frame from the current model, and a per-pixel march
+// sky-view LUT at the camera's altitude and aerial-perspective froxels,
+// each recomputed only when what it depends on changed (PassInputs: the
+// model for the first two, the altitude and the sun's elevation within a
+// stated step for the sky view, the exact view for the froxels), and a
+// per-pixel march
 // with the same multiple-scattering LUT where the LUTs cannot serve (high
 // up and in space). The multiple-scattering LUT sums the orders of
 // scattering one by one on the paper's 2D table (technique "hillaire"), or
@@ -10,7 +13,9 @@
 // the first also carries the glow of sunlight that the air scatters
 // forward along the sun's path, past the table's degree (a
 // forward-gain LUT). See hillaire_functions.glsl for why.
+#include "atmosphere/gpu/pass_inputs.h"
 #include "atmosphere/gpu/technique.h"
+#include "gl/depth_probe.h"
 #include "gl/fullscreen_pass.h"
 #include "gl/program.h"
 #include "gl/texture.h"
@@ -40,6 +45,17 @@ class HillaireTechnique final : public AtmosphereTechnique {
     double switch_start = 0.6;
     double switch_end = 0.8;
     Path path = Path::kByAltitude;
+    // The sky-view LUT is computed at the camera's altitude rounded to
+    // this step of log2(altitude) and at the sun's zenith angle rounded to
+    // this step, and reused while both round the same: the steps bound what
+    // reuse changes (PassReuseGLTest.SkyViewReuseWithinItsSteps...
+    // measures it on the canonical scenes). 0 computes it at the exact values.
+    double sky_view_log2_altitude_step = 1.0 / 512.0;
+    double sky_view_sun_zenith_step_deg = 0.0005;
+    // False: every pass runs every frame, the sky view at the exact
+    // altitude and sun (the steps above are not used): what reuse is
+    // measured against.
+    bool reuse_passes = true;
   };
   explicit HillaireTechnique(Settings settings);
   HillaireTechnique() : HillaireTechnique(Settings{}) {}
@@ -64,6 +80,10 @@ class HillaireTechnique final : public AtmosphereTechnique {
   double lut_weight() const { return lut_weight_; }
   // Distance along the ray that the froxel volume covered in the last frame.
   double aerial_range() const { return aerial_range_; }
+  // The altitude (metres above the bottom sphere) and the sun's zenith
+  // angle (radians) that the sky-view LUT was last computed at.
+  double sky_view_altitude() const { return sky_view_altitude_; }
+  double sky_view_sun_zenith() const { return sky_view_sun_zenith_; }
 
   // The LUTs, for tests and debugging views.
   GLuint transmittance_lut() const { return transmittance_lut_.id(); }
@@ -96,7 +116,11 @@ class HillaireTechnique final : public AtmosphereTechnique {
   std::array<Texture, 6> order_luts_;  // kScatteringOrders
   Buffer block_;
   FullscreenPass sky_pass_;
+  DepthProbe surface_probe_;
   bool prepared_ = false;  // prepare() ran since the last render()
+  PassKey model_key_;      // the model's block: every pass depends on it
+  PassInputs inputs_;
+  double sky_view_altitude_ = 0.0, sky_view_sun_zenith_ = 0.0;
   double lut_weight_ = 1.0;
   double aerial_range_ = 0.0;
 };
