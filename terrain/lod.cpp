@@ -38,17 +38,38 @@ bool LodSelector::above_horizon(const TileBounds& b, const LodView& view) const 
   return angle - angular_radius <= std::acos(R / D) + std::acos(R / r_top);
 }
 
+const TileBounds& LodSelector::bounds(const TileKey& key) const {
+  auto it = bounds_.find(key);
+  if (it != bounds_.end()) return it->second;
+  if (bounds_.size() >= kKeptBounds) bounds_.clear();
+  return bounds_.emplace(key, surface_->bounds(key)).first->second;
+}
+
+const TileBounds& LodSelector::resident_bounds(const TileKey& key,
+                                               const HeightRange& heights) const {
+  auto it = resident_bounds_.find(key);
+  // A tile's grid is the same whenever it is built: the heights change only
+  // if the key's tile was rebuilt from another source, and then so do its bounds.
+  if (it != resident_bounds_.end() && it->second.heights.min == heights.min &&
+      it->second.heights.max == heights.max) {
+    return it->second;
+  }
+  if (resident_bounds_.size() >= kKeptBounds) resident_bounds_.clear();
+  return resident_bounds_.insert_or_assign(key, surface_->bounds(key, &heights)).first->second;
+}
+
 void LodSelector::visit(const TileKey& key, const ResidentTile& tile, double parent_error,
                         const LodView& view, const TileErrorLookup& resident_error,
                         LodSelection& out) const {
   ++out.visited;
   const double error = tile.error;
-  TileBounds bounds = surface_->bounds(key, &tile.heights);
+  // Copies: the kept bounds may be emptied by the visits below.
+  const TileBounds own = resident_bounds(key, tile.heights);
   // The eye's distance to the tile is at least its distance to the
   // bounding sphere, and at least its height above the tile's highest point.
   double distance =
-      std::max({glm::length(bounds.sphere_center_body - view.eye_body) - bounds.radius,
-                glm::length(view.eye_body) - bounds.max_radius, 0.0});
+      std::max({glm::length(own.sphere_center_body - view.eye_body) - own.radius,
+                glm::length(view.eye_body) - own.max_radius, 0.0});
   double error_px = distance > 0 ? error * view.pixels_per_radian() / distance : 1e30;
   if (error_px > view.pixel_budget && key.level < surface_->config().max_level) {
     TileBounds child_bounds[4];
@@ -56,7 +77,7 @@ void LodSelector::visit(const TileKey& key, const ResidentTile& tile, double par
     bool visible[4], all_resident = true;
     for (int i = 0; i < 4; ++i) {
       TileKey c = key.child(i);
-      child_bounds[i] = surface_->bounds(c);
+      child_bounds[i] = bounds(c);
       visible[i] = true;
       if (!in_frustum(child_bounds[i], view)) {
         visible[i] = false;
@@ -81,7 +102,7 @@ void LodSelector::visit(const TileKey& key, const ResidentTile& tile, double par
   }
   SelectedTile t;
   t.key = key;
-  t.center_body = bounds.center_body;
+  t.center_body = own.center_body;
   t.distance = distance;
   t.error_px = error_px;
   if (key.level > 0) {
@@ -98,7 +119,7 @@ LodSelection LodSelector::select(const LodView& view,
   LodSelection out;
   for (int face = 0; face < 6; ++face) {
     TileKey root{face, 0, 0, 0};
-    TileBounds b = surface_->bounds(root);
+    const TileBounds b = bounds(root);
     if (!in_frustum(b, view)) {
       ++out.culled_frustum;
       continue;

@@ -5,9 +5,12 @@
 // behind the body's horizon are dropped. Selection only walks into tiles
 // that are resident: where children are missing it draws their parent and
 // lists the children as wanted, so a frame never waits and never has holes.
+// A tile's bounds depend on its key (and, once resident, on its grid's
+// heights) alone: they are computed once and kept across frames.
 #include "terrain/terrain_surface.h"
 
 #include <functional>
+#include <unordered_map>
 #include <vector>
 
 namespace planet {
@@ -68,8 +71,16 @@ class LodSelector {
  private:
   void visit(const TileKey& key, const ResidentTile& tile, double parent_error,
              const LodView& view, const TileErrorLookup& resident_error, LodSelection& out) const;
+  // The tile's bounds from the height source's promise, and from its
+  // resident grid's heights; kept, and recomputed only for new keys.
+  const TileBounds& bounds(const TileKey& key) const;
+  const TileBounds& resident_bounds(const TileKey& key, const HeightRange& heights) const;
 
   const TerrainSurface* surface_;
+  // At most kKeptBounds of each; emptied when full (a frame visits a few
+  // thousand tiles).
+  static constexpr size_t kKeptBounds = 1u << 16;
+  mutable std::unordered_map<TileKey, TileBounds, TileKeyHash> bounds_, resident_bounds_;
 };
 
 }  // namespace planet

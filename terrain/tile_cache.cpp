@@ -51,6 +51,18 @@ std::shared_ptr<const TileMesh> TileCache::use(const TileKey& key, uint64_t fram
   return it->second.mesh;
 }
 
+void TileCache::release_vertices(const TileKey& key) {
+  std::lock_guard lock(mutex_);
+  auto it = tiles_.find(key);
+  if (it == tiles_.end() || it->second.mesh->vertices.empty()) return;
+  auto kept = std::make_shared<TileMesh>();
+  kept->key = it->second.mesh->key;
+  kept->center_body = it->second.mesh->center_body;
+  kept->heights = it->second.mesh->heights;
+  kept->error = it->second.mesh->error;
+  it->second.mesh = std::move(kept);
+}
+
 std::vector<TileKey> TileCache::evict(uint64_t frame) {
   std::lock_guard lock(mutex_);
   std::vector<TileKey> dropped;
@@ -66,7 +78,7 @@ std::vector<TileKey> TileCache::evict(uint64_t frame) {
   for (const auto& [used, key] : candidates) {
     if (bytes_ <= budget_) break;
     auto it = tiles_.find(key);
-    bytes_ -= it->second.mesh->bytes();
+    bytes_ -= it->second.bytes;
     tiles_.erase(it);
     dropped.push_back(key);
   }
@@ -119,8 +131,9 @@ void TileCache::work() {
     auto mesh = std::make_shared<const TileMesh>(build_tile(*surface_, key));
     lock.lock();
     in_flight_.erase(key);
-    bytes_ += mesh->bytes();
-    tiles_[key] = Entry{std::move(mesh), 0};
+    const size_t bytes = mesh->bytes();
+    bytes_ += bytes;
+    tiles_[key] = Entry{std::move(mesh), 0, bytes};
     ++built_;
     tile_done_.notify_all();
   }

@@ -30,8 +30,14 @@ class TileCache {
   bool resident(const TileKey& key) const;
   // The resident tile's error and heights; false when not resident.
   bool lookup(const TileKey& key, ResidentTile& out) const;
-  // The tile, marked as used in `frame`; null when not resident.
+  // The tile, marked as used in `frame`; null when not resident. Its
+  // vertices are empty once released.
   std::shared_ptr<const TileMesh> use(const TileKey& key, uint64_t frame);
+  // Drops the tile's vertices from memory, keeping what selection needs
+  // (error, heights, centre): for a tile whose vertices now live on the
+  // GPU, which evicts it with the cache. It still counts its vertices'
+  // bytes against the budget, since the GPU holds them.
+  void release_vertices(const TileKey& key);
   // Drops least recently used tiles, not used in `frame`, until under
   // budget. Returns the keys dropped, for a GPU mirror to drop too.
   std::vector<TileKey> evict(uint64_t frame);
@@ -48,6 +54,7 @@ class TileCache {
   struct Entry {
     std::shared_ptr<const TileMesh> mesh;
     uint64_t last_used = 0;
+    size_t bytes = 0;  // of its vertices, whether held here or on the GPU
   };
   void work();
 

@@ -1,13 +1,21 @@
 // The hillaire technique at 1280x720: GPU time per pass (timer queries) on
-// the Earth ground, 400 km and 40 000 km views, and in the same run the
-// brute-force per-pixel march (the raymarch technique) of the same image
-// with the same step counts, as the ratio raymarch / hillaire of the whole
-// atmosphere's time. Manual time is hillaire's atmosphere passes; the
-// counters hold each pass's mean (ms).
+// the Earth ground, 400 km and 40 000 km views, and in the same run:
+//  - the same technique computing every pass every frame (reuse_passes
+//    off: how every frame ran before passes were reused), as the ratio
+//    every_pass_over_hillaire;
+//  - the brute-force per-pixel march (the raymarch technique) of the same
+//    image with the same step counts, as raymarch_over_hillaire;
+//  - one full-screen write of the HDR target (fill_ms), and the whole sky's
+//    passes against it (sky_over_fill).
+// Manual time is hillaire's atmosphere passes with reuse; the counters hold
+// each pass's mean (ms) and how many passes a frame reused.
 #include "atmosphere/gpu/hillaire/hillaire_technique.h"
 #include "atmosphere/gpu/raymarch/raymarch_technique.h"
 #include "core/data_paths.h"
 #include "gl/context.h"
+#include "gl/fullscreen_pass.h"
+#include "gl/program.h"
+#include "gl/timer.h"
 #include "render/frame.h"
 #include "sim/geodesy.h"
 
@@ -27,13 +35,36 @@ struct BenchView {
 // Passes that are not the atmosphere's.
 bool is_atmosphere_pass(const std::string& pass) { return pass != "surface" && pass != "tonemap"; }
 
+// The GPU time of one full-screen pass that writes a constant into an
+// RGBA32F target the size of the frame's HDR target: the least a sky pass
+// can cost.
+double fill_ms(int width, int height, int frames) {
+  Texture target = make_texture_2d(GL_RGBA32F, width, height);
+  Framebuffer fbo = make_framebuffer(target.id(), 0);
+  Program program = Program::graphics("gl/shaders/fullscreen.vert", "apps/bench/fill.frag");
+  FullscreenPass pass;
+  GpuTimer timer;
+  double total = 0;
+  for (int i = 0; i <= frames; ++i) {
+    timer.begin("fill");
+    pass.begin(fbo.id(), width, height, program);
+    pass.draw();
+    timer.end();
+    double ms = timer.collect().front().gpu_ms;
+    if (i > 0) total += ms;  // the first pays for compiling
+  }
+  return total / frames;
+}
+
 void BM_HillaireSky(benchmark::State& state, BenchView view) {
   auto context = GlContext::create_headless();
   Body body = load_body(data_dir() / "planets" / "earth.json");
   AtmosphereModel model = load_atmosphere(body);
-  HillaireTechnique::Settings settings;
-  FrameRenderer hillaire(1280, 720), brute_force(1280, 720);
+  HillaireTechnique::Settings settings, every_pass;
+  every_pass.reuse_passes = false;
+  FrameRenderer hillaire(1280, 720), recompute(1280, 720), brute_force(1280, 720);
   hillaire.set_body(body, model, std::make_unique<HillaireTechnique>(settings));
+  recompute.set_body(body, model, std::make_unique<HillaireTechnique>(every_pass));
   // The same steps per pixel as hillaire's per-pixel path, and the
   // transmittance LUT's 40 toward the sun.
   brute_force.set_body(
@@ -43,28 +74,43 @@ void BM_HillaireSky(benchmark::State& state, BenchView view) {
   Camera camera = geodesy.camera_at(view.place, glm::radians(view.heading_deg),
                                     glm::radians(view.pitch_deg), glm::radians(view.fov_deg));
   glm::dvec3 sun = geodesy.body_from_enu(view.place) * glm::normalize(glm::dvec3(0.3, 0.5, 0.6));
-  // The first frames pay for llvmpipe's shader compilation; not timed.
+  // The first frames pay for llvmpipe's shader compilation (and hillaire's
+  // for the model's tables); not timed.
   hillaire.render(camera, sun, 10.0);
+  recompute.render(camera, sun, 10.0);
   brute_force.render(camera, sun, 10.0);
+  auto atmosphere_ms = [](const FrameStats& stats) {
+    double ms = 0;
+    for (const PassTiming& p : stats.passes) {
+      if (is_atmosphere_pass(p.pass)) ms += p.gpu_ms;
+    }
+    return ms;
+  };
   std::map<std::string, double> pass_ms;
-  double hillaire_ms = 0, brute_force_ms = 0;
+  double hillaire_ms = 0, recompute_ms = 0, brute_force_ms = 0, reused = 0;
   for (auto _ : state) {
-    double atmosphere_ms = 0;
-    for (const PassTiming& p : hillaire.render(camera, sun, 10.0).passes) {
+    FrameStats stats = hillaire.render(camera, sun, 10.0);
+    for (const PassTiming& p : stats.passes) {
       if (!is_atmosphere_pass(p.pass)) continue;
       pass_ms[p.pass] += p.gpu_ms;
-      atmosphere_ms += p.gpu_ms;
+      reused += p.reused ? 1 : 0;
     }
-    hillaire_ms += atmosphere_ms;
-    for (const PassTiming& p : brute_force.render(camera, sun, 10.0).passes) {
-      if (is_atmosphere_pass(p.pass)) brute_force_ms += p.gpu_ms;
-    }
-    state.SetIterationTime(atmosphere_ms * 1e-3);
+    double ms = atmosphere_ms(stats);
+    hillaire_ms += ms;
+    recompute_ms += atmosphere_ms(recompute.render(camera, sun, 10.0));
+    brute_force_ms += atmosphere_ms(brute_force.render(camera, sun, 10.0));
+    state.SetIterationTime(ms * 1e-3);
   }
   double n = double(state.iterations());
   for (const auto& [pass, ms] : pass_ms) state.counters[pass + "_ms"] = ms / n;
+  state.counters["passes_reused"] = reused / n;
+  state.counters["every_pass_ms"] = recompute_ms / n;
+  state.counters["every_pass_over_hillaire"] = recompute_ms / std::max(hillaire_ms, 1e-9);
   state.counters["raymarch_ms"] = brute_force_ms / n;
   state.counters["raymarch_over_hillaire"] = brute_force_ms / std::max(hillaire_ms, 1e-9);
+  double fill = fill_ms(1280, 720, 3);
+  state.counters["fill_ms"] = fill;
+  state.counters["sky_over_fill"] = hillaire_ms / n / std::max(fill, 1e-9);
 }
 
 // Looking 10 degrees up from 2 m; at the limb from 400 km; straight down

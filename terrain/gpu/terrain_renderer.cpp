@@ -7,6 +7,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include <cmath>
+#include <stdexcept>
 
 namespace planet {
 
@@ -120,8 +121,13 @@ TerrainStats TerrainRenderer::draw(const Camera& camera, int width, int height,
     if (it == gpu_tiles_.end()) {
       auto mesh = cache_->use(t.key, frame_);
       if (!mesh) continue;  // selected tiles are resident; evicted meanwhile is impossible
+      // A tile leaves the GPU only with the cache, so a tile not on the GPU
+      // still has its vertices.
+      if (mesh->vertices.empty()) throw std::logic_error("terrain: a tile lost its vertices");
       GpuTile g{make_buffer(mesh->bytes(), mesh->vertices.data(), 0), mesh->center_body};
       it = gpu_tiles_.emplace(t.key, std::move(g)).first;
+      // One copy is enough: the GPU's.
+      cache_->release_vertices(t.key);
     } else {
       cache_->use(t.key, frame_);
     }
@@ -135,6 +141,7 @@ TerrainStats TerrainRenderer::draw(const Camera& camera, int width, int height,
     stats.triangles += index_count / 3;
     stats.max_error_px = std::max(stats.max_error_px, t.error_px);
     stats.max_level = std::max(stats.max_level, t.key.level);
+    stats.nearest_m = std::min(stats.nearest_m, t.distance);
   }
   for (const TileKey& k : cache_->evict(frame_)) gpu_tiles_.erase(k);
   stats.tiles_resident = cache_->tile_count();

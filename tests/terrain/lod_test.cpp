@@ -78,6 +78,42 @@ TEST(LodTest, FlightFrom2mTo400kmKeepsDrawnErrorUnderBudget) {
   }
 }
 
+// One selector kept over the flight (its tiles' bounds computed once and
+// reused) chooses exactly the tiles, distances and errors that a selector
+// made fresh for every frame chooses, up and back down again.
+TEST(LodTest, BoundsKeptAcrossFramesSelectTheSameTilesAsFreshOnes) {
+  Body body = load_body(data_dir() / "planets" / "earth.json");
+  TerrainSurface surface(body.shape, parse_terrain(body));
+  Geodesy geodesy(body.shape);
+  SyncTiles sync{surface, {}};
+  LodSelector kept(surface);
+  Geodetic place{glm::radians(46.55), glm::radians(7.98), 0.0};
+  double ground = 0;
+  surface.point(glm::normalize(geodesy.body_from_geodetic(place)), &ground);
+  std::vector<double> heights = {2.0, 20.0, 200.0, 2e3, 10e3, 50e3, 150e3, 400e3};
+  heights.insert(heights.end(), heights.rbegin() + 1, heights.rend());
+  int frame = 0;
+  for (double above : heights) {
+    place.height = ground + above;
+    LodView view = view_at(geodesy, place, glm::radians(60.0 + frame), glm::radians(-10.0), 270);
+    LodSelection fresh = sync.select_complete(view);
+    LodSelection reused = kept.select(view, [&](const TileKey& k, ResidentTile& t) {
+      auto it = sync.tiles.find(k);
+      if (it == sync.tiles.end()) return false;
+      t = {it->second.error, it->second.heights};
+      return true;
+    });
+    ASSERT_EQ(reused.tiles.size(), fresh.tiles.size()) << "at " << above << " m";
+    for (size_t i = 0; i < fresh.tiles.size(); ++i) {
+      EXPECT_EQ(reused.tiles[i].key.packed(), fresh.tiles[i].key.packed());
+      EXPECT_EQ(reused.tiles[i].distance, fresh.tiles[i].distance);
+      EXPECT_EQ(reused.tiles[i].error_px, fresh.tiles[i].error_px);
+    }
+    EXPECT_TRUE(reused.wanted.empty());
+    ++frame;
+  }
+}
+
 TEST(LodTest, HorizonCullingNeverDropsAVisiblePoint) {
   // A tile the horizon test drops must lie wholly behind the occluder
   // sphere: every grid vertex hidden from the eye by it. Checked from
