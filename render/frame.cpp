@@ -122,17 +122,12 @@ FrameStats FrameRenderer::render(const Camera& camera, const glm::dvec3& sun_dir
     const GLint zero = 0;
     glClearNamedFramebufferiv(hdr_fbo_.id(), GL_STENCIL, 0, &zero);
     technique_->render(sky, timer_);
-  } else {
-    // Airless: the surfaces are the image.
-    timer_.begin("copy");
-    glBlitNamedFramebuffer(surface_fbo_.id(), hdr_fbo_.id(), 0, 0, width_, height_, 0, 0, width_,
-                           height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    timer_.end();
   }
+  // Airless, the surfaces are the image: no atmosphere pass, not even a copy.
 
   timer_.begin("tonemap");
   tonemap_pass_.begin(ldr_fbo_.id(), width_, height_, tonemap_program_);
-  glBindTextureUnit(0, hdr_.id());
+  glBindTextureUnit(0, radiance().id());
   glUniform1f(tonemap_program_.uniform("u_exposure"), float(exposure));
   glUniform1i(tonemap_program_.uniform("u_display_values"),
               atmosphere_ && technique_ && technique_->writes_display_values() ? 1 : 0);
@@ -145,8 +140,12 @@ FrameStats FrameRenderer::render(const Camera& camera, const glm::dvec3& sun_dir
   return stats;
 }
 
+const Texture& FrameRenderer::radiance() const {
+  return atmosphere_ && technique_ ? hdr_ : surface_;
+}
+
 std::vector<float> FrameRenderer::read_hdr() const {
-  return read_texture_rgba32f(hdr_.id(), width_, height_);
+  return read_texture_rgba32f(radiance().id(), width_, height_);
 }
 
 std::vector<float> FrameRenderer::read_distance(const Camera& camera) const {

@@ -81,6 +81,9 @@ class FrameRenderer {
 
  private:
   void draw_surfaces(const Camera& camera, const glm::dvec3& sun_dir_body);
+  // The frame's linear radiance: the atmosphere's target, or for an
+  // airless body the surfaces' own.
+  const Texture& radiance() const;
 
   int width_, height_;
   Texture depth_, surface_, hdr_, ldr_;

@@ -28,7 +28,7 @@ constexpr double kStep = 1.0 / 120.0;  // fixed simulation step, seconds
 // machine) is dropped rather than flown through.
 constexpr double kLongestStallSeconds = 30.0;
 constexpr double kRecordRate = 10.0;  // recorded keyframes (= capture frames) per second
-const std::array<const char*, 3> kBodies = {"earth", "mars", "asteroid"};
+const std::array<const char*, 4> kBodies = {"earth", "mars", "asteroid", "moon"};
 
 }  // namespace
 

@@ -100,6 +100,32 @@ TEST_F(FrameGLTest, NightSideIsDarkFromOrbit) {
   EXPECT_LT(luminance(at(hdr, kSize / 2, kSize - 1)), 1e-5f);
 }
 
+// The Moon has no air: its frame is the surface pass and the tone map,
+// with no atmosphere pass at all (not even a copy), and the sunlit ground
+// and black space are what it shows.
+TEST(AirlessFrameGLTest, TheMoonRunsNoAtmospherePass) {
+  auto context = GlContext::create_headless();
+  Body moon = load_body(data_dir() / "planets" / "moon.json");
+  ASSERT_FALSE(moon.has_atmosphere());
+  const int width = 64, height = 48;
+  FrameRenderer renderer(width, height);
+  renderer.set_body(moon, std::nullopt, nullptr);
+  auto view = view_from_place(moon.shape, {0.0, glm::radians(20.0), 30e3}, 90.0, -10.0, 60.0,
+                              30.0, 90.0);
+  FrameStats stats = renderer.render(view.camera, view.sun_dir_body, 10.0);
+  std::vector<std::string> passes;
+  for (const PassTiming& p : stats.passes) passes.push_back(p.pass);
+  EXPECT_EQ(passes, (std::vector<std::string>{"surface", "tonemap"}));
+  std::vector<float> hdr = renderer.read_hdr();
+  // Top row: space, black; bottom row: the sunlit ground.
+  auto luminance = [&](int x, int y_from_bottom) {
+    const float* p = &hdr[(size_t(y_from_bottom) * width + size_t(x)) * 4];
+    return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
+  };
+  EXPECT_EQ(luminance(width / 2, height - 1), 0.0f);
+  EXPECT_GT(luminance(width / 2, 0), 0.01f);
+}
+
 TEST(ProjectionTest, ReversedZInfiniteFarPlane) {
   glm::mat4 m = clip_from_view_reversed_z(glm::radians(60.0), 2.0, 0.1);
   auto depth = [&](float z) {

@@ -48,7 +48,7 @@ TEST_P(ShippedFlightGLTest, NoFrameIsBlackAndNoKeyframeIsUnderground) {
 
 INSTANTIATE_TEST_SUITE_P(Flights, ShippedFlightGLTest,
                          ::testing::Values("ascent", "asteroid_landing", "earth_orbit_terminator",
-                                           "mars_sunset", "terrain_asteroid", "terrain_earth",
+                                           "mars_sunset", "moon_descent", "terrain_asteroid", "terrain_earth",
                                            "terrain_mars"),
                          [](const auto& instance) { return instance.param; });
 
