@@ -30,6 +30,37 @@ uniform mat3 u_local_from_atmo;  // rows: toward the sun's azimuth, across, up
 uniform float u_lut_weight;
 uniform float u_aerial_range;
 
+// The march's steps, from the optical depth of the whole ray through the
+// air (its worst channel, from the transmittance LUT; a ray that ends at
+// a surface gets the steps of the whole ray): PER_PIXEL_STEPS from an
+// optical depth of kFullStepsDepth, down to a third of them for a thin ray.
+// On Earth a ray from space to the ground has an optical depth of about
+// 0.3 to 0.5 (blue) and takes about 20 steps; a ray along the limb takes
+// them all. At a
+// fixed 20 steps the canonical space scenes moved by at most 0.6 points of
+// error (asteroid_space), at 12 by 3.6 points.
+const float kFullStepsDepth = 3.0;
+int march_steps(Atmosphere atmosphere, vec3 origin, vec3 dir) {
+  float r = length(origin);
+  float mu = dot(origin, dir) / r;
+  vec3 transmittance;
+  if (ray_intersects_ground(atmosphere, r, mu)) {
+    // Bruneton 2017's form: from the ground point back toward the origin,
+    // less the part beyond the origin.
+    float t = distance_to_bottom_boundary(atmosphere, r, mu);
+    vec3 ground = origin + t * dir;
+    float mu_ground = dot(ground, dir) / length(ground);
+    transmittance = transmittance_lookup(atmosphere, atmosphere.bottom_radius, -mu_ground) /
+                    max(transmittance_lookup(atmosphere, r, -mu), vec3(1e-30));
+  } else {
+    transmittance = transmittance_lookup(atmosphere, r, mu);
+  }
+  float depth = -log(max(min(transmittance.r, min(transmittance.g, transmittance.b)), 1e-30));
+  int fewest = max(PER_PIXEL_STEPS / 4, 4);
+  float f = clamp(depth / kFullStepsDepth, 0.0, 1.0);
+  return fewest + int(ceil(f * float(PER_PIXEL_STEPS - fewest)));
+}
+
 // A march from the camera over [0, t_max] of the ray: luminance (with the
 // solar irradiance) and transmittance. From outside the atmosphere the
 // march starts where the ray enters it, so that the samples keep their
@@ -48,8 +79,9 @@ void march(vec3 camera, vec3 dir, float t_max, bool with_ground, out vec3 lumina
   if (t_end <= t_start) return;
   vec3 origin = camera + t_start * dir;
   vec3 f_ms;
-  integrate_scattering(atmosphere, origin, dir, 0.0, t_end - t_start, u_sun_dir, PER_PIXEL_STEPS,
-                       kSourceSky, with_ground, luminance, transmittance, f_ms);
+  integrate_scattering(atmosphere, origin, dir, 0.0, t_end - t_start, u_sun_dir,
+                       march_steps(atmosphere, origin, dir), kSourceSky, with_ground, luminance,
+                       transmittance, f_ms);
   luminance *= atmosphere.solar_irradiance;
 }
 
