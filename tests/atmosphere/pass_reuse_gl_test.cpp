@@ -200,5 +200,34 @@ TEST_F(PassReuseGLTest, NoAerialPerspectiveWithoutASurfaceInItsRangeAndTheSameIm
   EXPECT_EQ(pruned.read_hdr(), unpruned.read_hdr());
 }
 
+// From 40 000 km the sky pass marches only the pixels inside the shell's
+// screen bound; the others are space, and the sun's disk there, drawn to
+// the same bits.
+TEST_F(PassReuseGLTest, FromSpaceOnlyThePixelsInTheShellsBoundAreShadedAndTheImageIsTheSame) {
+  auto view = view_from_place(body_.shape, {glm::radians(10.0), glm::radians(20.0), 40000e3},
+                              30.0, -75.0, 50.0, 30.0, 0.0);
+  // The sun in the frame, in space beside the disk, on the centre of pixel
+  // (80, 50): the disk is smaller than a pixel.
+  const int width = 96, height = 64;
+  const double t = std::tan(0.5 * view.camera.vertical_fov);
+  const glm::dvec2 ndc(2.0 * 80.5 / width - 1.0, 2.0 * 50.5 / height - 1.0);
+  view.sun_dir_body = glm::normalize(
+      view.camera.body_from_camera * glm::dvec3(ndc.x * t * width / height, ndc.y * t, -1.0));
+  FrameRenderer pruned(width, height), unpruned(width, height);
+  unpruned.set_view_pruning(false);
+  auto technique = std::make_unique<HillaireTechnique>();
+  HillaireTechnique* hillaire = technique.get();
+  pruned.set_body(body_, model_, std::move(technique));
+  unpruned.set_body(body_, model_, make_technique("hillaire"));
+  FrameStats stats = pruned.render(view.camera, view.sun_dir_body, 10.0);
+  unpruned.render(view.camera, view.sun_dir_body, 10.0);
+  EXPECT_TRUE(ran(stats).count("space"));
+  EXPECT_LT(hillaire->shaded_fraction(), 0.5);
+  EXPECT_GT(hillaire->shaded_fraction(), 0.05);
+  std::vector<float> hdr = pruned.read_hdr();
+  EXPECT_EQ(hdr, unpruned.read_hdr());
+  EXPECT_GT(*std::max_element(hdr.begin(), hdr.end()), 1000.0f) << "the sun's disk is in view";
+}
+
 }  // namespace
 }  // namespace planet

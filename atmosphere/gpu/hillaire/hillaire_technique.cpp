@@ -2,6 +2,7 @@
 
 #include "atmosphere/gpu/atmosphere_block.h"
 #include "atmosphere/math/hillaire_math.h"
+#include "atmosphere/screen_bound.h"
 #include "gl/timer.h"
 
 #include <fmt/format.h>
@@ -104,6 +105,7 @@ HillaireTechnique::HillaireTechnique(Settings settings)
       sky_program_(Program::graphics(
           "gl/shaders/fullscreen.vert", "atmosphere/gpu/hillaire/hillaire_sky.frag",
           view_defines(settings, fmt::format("PER_PIXEL_STEPS {}", settings.per_pixel_steps)))),
+      space_program_(Program::graphics("gl/shaders/fullscreen.vert", "atmosphere/gpu/space.frag")),
       transmittance_lut_(make_texture_2d(GL_RGBA32F, shared::kTransmittanceLutWidth,
                                          shared::kTransmittanceLutHeight)),
       multiple_scattering_lut_(
@@ -307,8 +309,58 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
     timer.end();
   }
 
+  // From outside the shell, on the per-pixel path alone, the sky pass
+  // shades only the pixels within the shell's screen bound (with a pixel to
+  // spare on each side); the others see space, drawn by a pass that costs
+  // next to nothing and writes what the sky pass would have.
+  const int w = frame.width, h = frame.height;
+  glm::ivec4 shaded(0, 0, w, h);  // x, y, width, height
+  if (frame.view_pruning && lut_weight_ == 0.0) {
+    if (auto bound = sphere_ndc_bound(-frame.camera_atmo, top,
+                                      glm::dmat3(frame.atmo_ray_from_ndc))) {
+      auto pixel = [](double ndc, int size) { return 0.5 * (ndc + 1.0) * size; };
+      int x0 = std::clamp(int(std::floor(pixel(bound->min.x, w))) - 2, 0, w);
+      int x1 = std::clamp(int(std::ceil(pixel(bound->max.x, w))) + 2, 0, w);
+      int y0 = std::clamp(int(std::floor(pixel(bound->min.y, h))) - 2, 0, h);
+      int y1 = std::clamp(int(std::ceil(pixel(bound->max.y, h))) + 2, 0, h);
+      shaded = glm::ivec4(x0, y0, std::max(x1 - x0, 0), std::max(y1 - y0, 0));
+    }
+  }
+  shaded_fraction_ = double(shaded.z) * double(shaded.w) / (double(w) * double(h));
+  if (shaded_fraction_ < 1.0) {
+    timer.begin("space");
+    sky_pass_.begin(frame.target_framebuffer, w, h, space_program_);
+    glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, block_.id());
+    glBindTextureUnit(0, frame.depth_texture);
+    glBindTextureUnit(1, frame.surface_texture);
+    glUniform3fv(space_program_.uniform("u_camera"), 1,
+                 glm::value_ptr(glm::vec3(frame.camera_atmo)));
+    glUniformMatrix3fv(space_program_.uniform("u_ray_from_ndc"), 1, GL_FALSE,
+                       glm::value_ptr(frame.atmo_ray_from_ndc));
+    glUniform3fv(space_program_.uniform("u_sun_dir"), 1, glm::value_ptr(frame.sun_dir_atmo));
+    glUniform1f(space_program_.uniform("u_near"), frame.near);
+    // The bands around the shaded rectangle: below, above, left, right.
+    const glm::ivec4 bands[4] = {{0, 0, w, shaded.y},
+                                 {0, shaded.y + shaded.w, w, h - shaded.y - shaded.w},
+                                 {0, shaded.y, shaded.x, shaded.w},
+                                 {shaded.x + shaded.z, shaded.y, w - shaded.x - shaded.z, shaded.w}};
+    glEnable(GL_SCISSOR_TEST);
+    for (const glm::ivec4& band : bands) {
+      if (band.z <= 0 || band.w <= 0) continue;
+      glScissor(band.x, band.y, band.z, band.w);
+      sky_pass_.draw();
+    }
+    glDisable(GL_SCISSOR_TEST);
+    timer.end();
+  }
+  if (shaded.z <= 0 || shaded.w <= 0) return;
+
   timer.begin("sky");
-  sky_pass_.begin(frame.target_framebuffer, frame.width, frame.height, sky_program_);
+  sky_pass_.begin(frame.target_framebuffer, w, h, sky_program_);
+  if (shaded_fraction_ < 1.0) {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(shaded.x, shaded.y, shaded.z, shaded.w);
+  }
   glBindTextureUnit(0, frame.depth_texture);
   glBindTextureUnit(1, frame.surface_texture);
   glBindTextureUnit(4, sky_view_lut_.id());
@@ -327,6 +379,7 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   glUniform1f(sky_program_.uniform("u_lut_weight"), float(lut_weight_));
   glUniform1f(sky_program_.uniform("u_aerial_range"), float(aerial_range_));
   sky_pass_.draw();
+  glDisable(GL_SCISSOR_TEST);
   timer.end();
 }
 

@@ -80,6 +80,9 @@ class HillaireTechnique final : public AtmosphereTechnique {
   double lut_weight() const { return lut_weight_; }
   // Distance along the ray that the froxel volume covered in the last frame.
   double aerial_range() const { return aerial_range_; }
+  // The fraction of the frame's pixels that the sky pass shaded in the last
+  // frame (the rest, outside the shell's screen bound, were space).
+  double shaded_fraction() const { return shaded_fraction_; }
   // The altitude (metres above the bottom sphere) and the sun's zenith
   // angle (radians) that the sky-view LUT was last computed at.
   double sky_view_altitude() const { return sky_view_altitude_; }
@@ -110,7 +113,7 @@ class HillaireTechnique final : public AtmosphereTechnique {
   AtmosphereModel model_;
   Program transmittance_program_, multiple_scattering_program_, first_order_program_,
       next_order_program_, orders_sum_program_, forward_gain_program_, sky_view_program_,
-      aerial_program_, sky_program_;
+      aerial_program_, sky_program_, space_program_;
   Texture transmittance_lut_, multiple_scattering_lut_, ground_irradiance_lut_, forward_gain_lut_,
       sky_view_lut_, aerial_scattering_, aerial_transmittance_;
   std::array<Texture, 6> order_luts_;  // kScatteringOrders
@@ -123,6 +126,7 @@ class HillaireTechnique final : public AtmosphereTechnique {
   double sky_view_altitude_ = 0.0, sky_view_sun_zenith_ = 0.0;
   double lut_weight_ = 1.0;
   double aerial_range_ = 0.0;
+  double shaded_fraction_ = 1.0;
 };
 
 }  // namespace planet
