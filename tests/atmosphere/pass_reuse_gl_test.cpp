@@ -229,5 +229,37 @@ TEST_F(PassReuseGLTest, FromSpaceOnlyThePixelsInTheShellsBoundAreShadedAndTheIma
   EXPECT_GT(*std::max_element(hdr.begin(), hdr.end()), 1000.0f) << "the sun's disk is in view";
 }
 
+// Every pruning by view (no froxels without a surface in their range, no
+// march outside the shell's screen bound) leaves the image as it was, to
+// the bit: on every canonical scene, and on a climb from 2 m to 1e8 m.
+TEST_F(PassReuseGLTest, PruningByViewChangesNoPixelOnTheCanonicalScenesOrAClimbTo1e8m) {
+  auto compare = [](const Body& body, const AtmosphereModel& model, int width, int height,
+                    const Camera& camera, const glm::dvec3& sun, const std::string& where) {
+    FrameRenderer pruned(width, height), unpruned(width, height);
+    unpruned.set_view_pruning(false);
+    pruned.set_body(body, model, make_technique("hillaire"));
+    unpruned.set_body(body, model, make_technique("hillaire"));
+    FrameStats stats = pruned.render(camera, sun, 10.0);
+    unpruned.render(camera, sun, 10.0);
+    EXPECT_EQ(pruned.read_hdr(), unpruned.read_hdr()) << where;
+    return stats;
+  };
+  for (const Scene& scene : canonical_scenes()) {
+    Body body = scene_body(scene);
+    if (!body.has_atmosphere()) continue;
+    compare(body, scene_atmosphere(scene, body), scene.width, scene.height, scene.camera,
+            scene.sun_dir_body, scene.name);
+  }
+  int pruned_frames = 0;
+  for (double height : {2.0, 100.0, 3e3, 30e3, 90e3, 400e3, 3e6, 4e7, 1e8}) {
+    auto view = view_from_place(body_.shape, {glm::radians(46.55), glm::radians(7.98), height},
+                                60.0, height < 1e5 ? 5.0 : -60.0, 60.0, 25.0, 100.0);
+    FrameStats stats = compare(body_, model_, 96, 54, view.camera, view.sun_dir_body,
+                               "climb at " + std::to_string(height) + " m");
+    pruned_frames += int(ran(stats).count("space"));
+  }
+  EXPECT_GE(pruned_frames, 2) << "the bound left pixels out from 4e7 and 1e8 m at least";
+}
+
 }  // namespace
 }  // namespace planet
