@@ -281,19 +281,20 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   // of the pixels does.
   const glm::vec3 camera_f(camera);
   const bool surfaces_in_range =
-      !frame.view_pruning ||
-      (frame.nearest_surface <= aerial_range_ &&
+      lut_weight_ > 0.0 &&
+      (!frame.view_pruning ||
+       (frame.nearest_surface <= aerial_range_ &&
        (frame.depth_texture == 0 ||
         surface_probe_.any_nearer(frame.depth_texture, frame.width, frame.height, frame.near,
-                                  float(aerial_range_) / frame.atmo_scale_min)));
-  if (lut_weight_ > 0.0 && surfaces_in_range &&
+                                  float(aerial_range_) / frame.atmo_scale_min))));
+  if (surfaces_in_range &&
       !inputs_.changed("aerial_perspective", PassKey(model_key_)
                                                  .add(camera_f)
                                                  .add(frame.atmo_ray_from_ndc)
                                                  .add(frame.sun_dir_atmo)
                                                  .add(float(aerial_range_)))) {
     timer.reuse("aerial_perspective");
-  } else if (lut_weight_ > 0.0 && surfaces_in_range) {
+  } else if (surfaces_in_range) {
     timer.begin("aerial_perspective");
     aerial_program_.use();
     glUniform3fv(aerial_program_.uniform("u_camera"), 1, glm::value_ptr(camera_f));
