@@ -49,16 +49,13 @@ void FrameRenderer::set_body(const Body& body, std::optional<AtmosphereModel> at
 
   terrain_ = std::make_unique<TerrainRenderer>(body, terrain_options_);
 
-  if (atmosphere_) {
-    AtmosphereBlock block = make_atmosphere_block(*atmosphere_);
-    glNamedBufferSubData(atmosphere_block_.id(), 0, sizeof(block), &block);
-    if (technique_) technique_->update(*atmosphere_);
-  }
+  if (atmosphere_) set_atmosphere(*atmosphere_);
   check_gl_errors("FrameRenderer::set_body");
 }
 
 void FrameRenderer::set_atmosphere(const AtmosphereModel& atmosphere) {
   if (!atmosphere_) throw std::logic_error("set_atmosphere: the body is drawn without air");
+  // The frame's own block (the terrain's lighting reads it) and the technique's.
   atmosphere_ = atmosphere;
   AtmosphereBlock block = make_atmosphere_block(atmosphere);
   glNamedBufferSubData(atmosphere_block_.id(), 0, sizeof(block), &block);
