@@ -62,7 +62,19 @@ void FrameRenderer::set_atmosphere(const AtmosphereModel& atmosphere) {
   if (technique_) technique_->update(atmosphere);
 }
 
-void FrameRenderer::draw_surfaces(const Camera& camera, const glm::dvec3& sun_dir_body) {
+std::unique_ptr<AtmosphereTechnique> FrameRenderer::swap_technique(
+    std::unique_ptr<AtmosphereTechnique> technique) {
+  std::swap(technique, technique_);
+  return technique;
+}
+
+void FrameRenderer::set_fade(AtmosphereTechnique* previous, double weight) {
+  fade_from_ = weight > 0.0 ? previous : nullptr;
+  fade_weight_ = std::clamp(weight, 0.0, 1.0);
+}
+
+void FrameRenderer::draw_surfaces(const Camera& camera, const glm::dvec3& sun_dir_body,
+                                  const AtmosphereTechnique* technique) {
   const float black[4] = {0, 0, 0, 0};
   begin_reversed_z(surface_fbo_.id(), width_, height_, black);
   TerrainLighting lighting;
@@ -71,7 +83,7 @@ void FrameRenderer::draw_surfaces(const Camera& camera, const glm::dvec3& sun_di
   if (atmosphere_) {
     lighting.atmo_scale = atmosphere_scale(body_.shape, atmosphere_->bottom_radius);
     lighting.solar_irradiance = glm::vec3(atmosphere_->solar_irradiance);
-    if (technique_) lighting.sky_irradiance = technique_->ground_irradiance();
+    if (technique) lighting.sky_irradiance = technique->ground_irradiance();
     lighting.sky_light = surface_sky_light_;
   }
   // Bound even for an airless body (then all zero): the block is declared.
@@ -80,54 +92,90 @@ void FrameRenderer::draw_surfaces(const Camera& camera, const glm::dvec3& sun_di
   glDisable(GL_DEPTH_TEST);
 }
 
+void FrameRenderer::draw_atmosphere(const Camera& camera, const glm::dvec3& sun_dir_body,
+                                    double exposure, AtmosphereTechnique& technique) {
+  glm::dvec3 scale = atmosphere_scale(body_.shape, atmosphere_->bottom_radius);
+  SkyFrame sky;
+  sky.width = width_;
+  sky.height = height_;
+  sky.camera_atmo = scale * camera.pos_body;
+  sky.atmo_ray_from_ndc =
+      glm::mat3(atmo_ray_from_ndc(scale, camera, double(width_) / double(height_)));
+  sky.sun_dir_atmo = glm::vec3(glm::normalize(scale * sun_dir_body));
+  sky.near = float(camera.near);
+  // A lower bound of every distance the technique meets in front of a
+  // surface: the nearest drawn tile, less the depth of the lowest ground
+  // below the ellipsoid (a ray may cross the bottom sphere, where the
+  // technique's air ends, up to that much before it meets a tile in a
+  // hollow), in atmosphere space, which shrinks no distance by more than
+  // its smallest scale.
+  const double lowest = std::min(0.0, terrain_->surface().heights().range().min);
+  sky.atmo_scale_min = float(std::min({scale.x, scale.y, scale.z}));
+  sky.nearest_surface =
+      view_pruning_ ? float(std::max(terrain_stats_.nearest_m + lowest, 0.0) * sky.atmo_scale_min)
+                    : 0.0f;
+  sky.view_pruning = view_pruning_;
+  sky.exposure = float(exposure);
+  sky.depth_texture = depth_.id();
+  sky.surface_texture = surface_.id();
+  sky.target_framebuffer = hdr_fbo_.id();
+  const GLint zero = 0;
+  glClearNamedFramebufferiv(hdr_fbo_.id(), GL_STENCIL, 0, &zero);
+  technique.render(sky, timer_);
+}
+
 FrameStats FrameRenderer::render(const Camera& camera, const glm::dvec3& sun_dir_body,
                                  double exposure) {
   // Before the surface timer starts: waiting is not drawing.
   if (terrain_wait_s_ > 0) terrain_->wait_until_complete(camera, width_, height_, terrain_wait_s_);
+  const bool sky = atmosphere_ && technique_;
+  AtmosphereTechnique* fading =
+      sky && fade_from_ &&
+              fade_from_->writes_display_values() == technique_->writes_display_values()
+          ? fade_from_
+          : nullptr;
   // The technique's model-wide tables first: the ground's sky light is one.
-  if (atmosphere_ && technique_) technique_->prepare(timer_);
+  if (sky) technique_->prepare(timer_);
+  if (fading) {
+    // The previous technique's frame, whole, into the fade texture.
+    fading->prepare(timer_);
+    timer_.begin("fade:surface");
+    draw_surfaces(camera, sun_dir_body, fading);
+    timer_.end();
+    draw_atmosphere(camera, sun_dir_body, exposure, *fading);
+    if (!fade_.id()) fade_ = make_texture_2d(GL_RGBA32F, width_, height_);
+    glCopyImageSubData(hdr_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, fade_.id(), GL_TEXTURE_2D, 0, 0, 0,
+                       0, width_, height_, 1);
+  }
   timer_.begin("surface");
-  draw_surfaces(camera, sun_dir_body);
+  draw_surfaces(camera, sun_dir_body, sky ? technique_.get() : nullptr);
   timer_.end();
 
-  if (atmosphere_ && technique_) {
-    glm::dvec3 scale = atmosphere_scale(body_.shape, atmosphere_->bottom_radius);
-    SkyFrame sky;
-    sky.width = width_;
-    sky.height = height_;
-    sky.camera_atmo = scale * camera.pos_body;
-    sky.atmo_ray_from_ndc =
-        glm::mat3(atmo_ray_from_ndc(scale, camera, double(width_) / double(height_)));
-    sky.sun_dir_atmo = glm::vec3(glm::normalize(scale * sun_dir_body));
-    sky.near = float(camera.near);
-    // A lower bound of every distance the technique meets in front of a
-    // surface: the nearest drawn tile, less the depth of the lowest ground
-    // below the ellipsoid (a ray may cross the bottom sphere, where the
-    // technique's air ends, up to that much before it meets a tile in a
-    // hollow), in atmosphere space, which shrinks no distance by more than
-    // its smallest scale.
-    const double lowest = std::min(0.0, terrain_->surface().heights().range().min);
-    sky.atmo_scale_min = float(std::min({scale.x, scale.y, scale.z}));
-    sky.nearest_surface =
-        view_pruning_ ? float(std::max(terrain_stats_.nearest_m + lowest, 0.0) * sky.atmo_scale_min)
-                      : 0.0f;
-    sky.view_pruning = view_pruning_;
-    sky.exposure = float(exposure);
-    sky.depth_texture = depth_.id();
-    sky.surface_texture = surface_.id();
-    sky.target_framebuffer = hdr_fbo_.id();
-    const GLint zero = 0;
-    glClearNamedFramebufferiv(hdr_fbo_.id(), GL_STENCIL, 0, &zero);
-    technique_->render(sky, timer_);
-  }
+  if (sky) draw_atmosphere(camera, sun_dir_body, exposure, *technique_);
   // Airless, the surfaces are the image: no atmosphere pass, not even a copy.
+
+  if (fading) {
+    timer_.begin("fade");
+    if (!fade_program_.id()) {
+      fade_program_ = Program::graphics("gl/shaders/fullscreen.vert", "render/shaders/fade.frag");
+    }
+    tonemap_pass_.begin(hdr_fbo_.id(), width_, height_, fade_program_);
+    glDisable(GL_STENCIL_TEST);
+    glEnable(GL_BLEND);
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+    glBindTextureUnit(0, fade_.id());
+    glUniform1f(fade_program_.uniform("u_weight"), float(fade_weight_));
+    tonemap_pass_.draw();
+    glDisable(GL_BLEND);
+    timer_.end();
+  }
 
   timer_.begin("tonemap");
   tonemap_pass_.begin(ldr_fbo_.id(), width_, height_, tonemap_program_);
   glBindTextureUnit(0, radiance().id());
   glUniform1f(tonemap_program_.uniform("u_exposure"), float(exposure));
   glUniform1i(tonemap_program_.uniform("u_display_values"),
-              atmosphere_ && technique_ && technique_->writes_display_values() ? 1 : 0);
+              sky && technique_->writes_display_values() ? 1 : 0);
   tonemap_pass_.draw();
   timer_.end();
 

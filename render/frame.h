@@ -43,6 +43,17 @@ class FrameRenderer {
 
   FrameStats render(const Camera& camera, const glm::dvec3& sun_dir_body, double exposure);
 
+  // Another technique for the body's atmosphere, taken as it is (the caller
+  // has given it the current model); returns the one it replaces.
+  std::unique_ptr<AtmosphereTechnique> swap_technique(std::unique_ptr<AtmosphereTechnique> technique);
+  AtmosphereTechnique* technique() const { return technique_.get(); }
+  // While a switch of technique fades: `previous` draws each frame too
+  // (surfaces and atmosphere, as it would alone), and its image is laid
+  // over the technique's at `weight` (0 to 1), in linear radiance. nullptr
+  // or a weight of 0 ends it; so does a pair of which one writes display
+  // values and the other radiance. The caller keeps `previous` alive.
+  void set_fade(AtmosphereTechnique* previous, double weight);
+
   // Terrain settings, taken by the next set_body.
   void set_terrain_options(const TerrainOptions& options) { terrain_options_ = options; }
   // Wait up to this long for every terrain tile a frame needs, so that a
@@ -80,7 +91,10 @@ class FrameRenderer {
   GLuint ldr_texture() const { return ldr_.id(); }
 
  private:
-  void draw_surfaces(const Camera& camera, const glm::dvec3& sun_dir_body);
+  void draw_surfaces(const Camera& camera, const glm::dvec3& sun_dir_body,
+                     const AtmosphereTechnique* technique);
+  void draw_atmosphere(const Camera& camera, const glm::dvec3& sun_dir_body, double exposure,
+                       AtmosphereTechnique& technique);
   // The frame's linear radiance: the atmosphere's target, or for an
   // airless body the surfaces' own.
   const Texture& radiance() const;
@@ -104,6 +118,10 @@ class FrameRenderer {
   Body body_;
   std::optional<AtmosphereModel> atmosphere_;
   std::unique_ptr<AtmosphereTechnique> technique_;
+  AtmosphereTechnique* fade_from_ = nullptr;
+  double fade_weight_ = 0;
+  Texture fade_;  // the previous technique's frame, made on the first fade
+  Program fade_program_;
   GpuTimer timer_;
 };
 
