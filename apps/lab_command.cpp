@@ -3,16 +3,20 @@
 // them by scripts/lab_report.py.
 #include "apps/commands.h"
 #include "apps/reference_progress.h"
+#include "core/atomic_file.h"
 #include "core/data_paths.h"
 #include "core/error.h"
 #include "core/interrupt.h"
 #include "core/paths.h"
 #include "core/progress.h"
+#include "core/version.h"
 #include "gl/context.h"
+#include "lab/error_model_build.h"
 #include "lab/reference_cache.h"
 #include "lab/stability.h"
 #include "lab/sweep.h"
 
+#include <epoxy/gl.h>
 #include <fmt/format.h>
 
 #include <cstdio>
@@ -20,6 +24,7 @@
 #include <tuple>
 #include <cstdlib>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -29,7 +34,7 @@ namespace {
 
 struct LabArgs {
   SweepOptions options;
-  std::string out = "out/lab", paths;
+  std::string out = "out/lab", paths, error_model;
   bool quiet = false, no_report = false;
 };
 
@@ -68,6 +73,17 @@ void run_lab(LabArgs& args) {
   SweepPlan plan = plan_sweep(o);
   std::string python = args.no_report ? "" : report_python();
   OutputFolder folder(o.out, "--out");
+  std::optional<OutputFolder> model_folder;
+  if (!args.error_model.empty()) {
+    std::filesystem::path file = args.error_model;
+    if (std::filesystem::is_directory(file)) {
+      throw InputError(fmt::format("--error-model: {} is a folder; give a file, such as "
+                                   "data/lab/error_model.json",
+                                   file.string()));
+    }
+    model_folder.emplace(file.has_parent_path() ? file.parent_path() : ".", "--error-model");
+    model_folder->keep();
+  }
   auto context = GlContext::create_headless();
   InterruptScope interrupt;
   ensure_references(plan, args);
@@ -89,6 +105,22 @@ void run_lab(LabArgs& args) {
     }
   });
   progress.finish();
+  // The governor's table: the cells, and what a model change costs each choice.
+  auto changes = model_change_times(o, plan, [&](const std::string& choice) {
+    if (!args.quiet) std::fprintf(stderr, "lab: timing a model change of %s\n", choice.c_str());
+    if (interrupt.interrupted()) {
+      folder.keep();
+      std::fprintf(stderr, "planet: interrupted: the cells are kept in %s; run the same command "
+                           "again to go on\n", o.out.string().c_str());
+      std::exit(kInterruptedExitStatus);
+    }
+  });
+  std::string source = fmt::format("planet lab run, planet {}, {} cells timed at {}x{} on {}",
+                                   planet_version(), cells.size(), o.time_width, o.time_height,
+                                   reinterpret_cast<const char*>(glGetString(GL_RENDERER)));
+  std::string table = error_model_to_json(build_error_model(cells, changes, o, source)).dump(2) + "\n";
+  write_file_atomically(o.out / "error_model.json", table);
+  if (!args.error_model.empty()) write_file_atomically(args.error_model, table);
   folder.keep();
   int on_front = 0, kept = 0;
   for (const SweepCell& c : cells) on_front += c.on_front ? 1 : 0, kept += c.kept ? 1 : 0;
@@ -262,6 +294,9 @@ void add_lab_command(CLI::App& app) {
       ->capture_default_str();
   run->add_option("--spp", args->paths,
                   "References' paths per pixel (default: the best cached or shipped, else 8192)");
+  run->add_option("--error-model", args->error_model,
+                  "Also write the governor's table here (data/lab/error_model.json ships it); "
+                  "OUT/error_model.json always");
   run->add_flag("--redo", args->options.redo, "Time and measure finished cells again");
   run->add_flag("--no-report", args->no_report, "The tables alone: no charts, no report");
   run->add_flag("--quiet", args->quiet, "No progress lines");
