@@ -6,10 +6,12 @@
 #include "gl/context.h"
 #include "render/capture.h"
 #include "render/capture_shares.h"
+#include "render/governor.h"
 #include "sim/flight_script.h"
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
@@ -26,6 +28,8 @@ struct CaptureArgs {
   bool quiet = false;
   double pixel_budget = 1.0;
   double terrain_cache_mib = 256.0;
+  double error_budget = std::nan("");  // NaN: none given
+  std::string error_model;
 };
 
 // "A:B" (B exclusive), "A:" or ":B".
@@ -94,13 +98,31 @@ void run(const CaptureArgs& args) {
   // Every input, and the output folder, before GL starts.
   check_frames(script, options);
   if (script.body.has_atmosphere()) script_technique(script);
+  if (!std::isnan(args.error_budget)) {
+    options.error_budget_percent = checked_error_budget(args.error_budget, "--error-budget");
+  }
+  options.error_model_file = args.error_model;
+  std::optional<double> budget = capture_error_budget(script, options);
+  if (options.error_budget_percent && script.technique_named && !args.quiet) {
+    std::fprintf(stderr,
+                 "planet: %s names its technique (%s), which wins over --error-budget: the "
+                 "governor is off\n",
+                 script.file.string().c_str(), script.technique.c_str());
+  }
+  if (budget) {
+    load_error_model(options.error_model_file.empty() ? shipped_error_model_file()
+                                                      : options.error_model_file);
+  }
   check_keyframes_above_ground(script);
   OutputFolder out(options.out_dir, "--out");
   auto context = GlContext::create_headless();
   if (!args.quiet) {
     std::fprintf(stderr, "planet: %s, %dx%d, %d frames at %g fps, %s sky on %s\n",
                  script.body.name.c_str(), script.width, script.height, script.frame_count(),
-                 script.frame_rate, script.technique.c_str(), context->renderer().c_str());
+                 script.frame_rate,
+                 budget ? fmt::format("governed (budget {:g} %)", *budget).c_str()
+                        : script.technique.c_str(),
+                 context->renderer().c_str());
   }
   CaptureResult result;
   try {
@@ -140,6 +162,11 @@ void add_capture_command(CLI::App& app) {
   cmd->add_option("--terrain-cache-mib", args->terrain_cache_mib,
                   "Terrain tiles kept resident, MiB")
       ->check(CLI::Range(8.0, 65536.0));
+  cmd->add_option("--error-budget", args->error_budget,
+                  "Let the governor choose each frame's technique: the cheapest whose predicted "
+                  "error is within PCT percent (a technique the script names wins)");
+  cmd->add_option("--error-model", args->error_model,
+                  "The governor's table (default data/lab/error_model.json)");
   cmd->callback([args] { run(*args); });
 }
 

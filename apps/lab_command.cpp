@@ -12,6 +12,7 @@
 #include "core/version.h"
 #include "gl/context.h"
 #include "lab/error_model_build.h"
+#include "lab/governor_check.h"
 #include "lab/reference_cache.h"
 #include "lab/stability.h"
 #include "lab/sweep.h"
@@ -257,6 +258,43 @@ void run_stability_command(StabilityArgs& args) {
   }
 }
 
+struct GovernorArgs {
+  GovernorCheckOptions options;
+  std::string out = "out/lab/governor", error_model;
+  bool quiet = false, canonical_only = false;
+};
+
+void run_governor_command(GovernorArgs& args) {
+  set_progress_shown(!args.quiet);
+  GovernorCheckOptions& o = args.options;
+  o.out = args.out;
+  o.error_model = args.error_model;
+  o.held_out = !args.canonical_only;
+  check_governor_options(o);
+  OutputFolder folder(o.out, "--out");
+  auto context = GlContext::create_headless();
+  InterruptScope interrupt;
+  std::optional<Progress> progress;
+  auto checks = run_governor_check(o, [&](int done, int total, const std::string&) {
+    if (!progress) progress.emplace("lab governor", total, "view", args.quiet);
+    progress->update(done);
+    if (interrupt.interrupted()) {
+      progress->finish();
+      folder.keep();
+      std::fprintf(stderr,
+                   "planet: interrupted: %d of %d checks are done and kept in %s; run the same "
+                   "command again to go on\n",
+                   done, total, (o.out / "views").string().c_str());
+      std::exit(kInterruptedExitStatus);
+    }
+  });
+  if (progress) progress->finish();
+  folder.keep();
+  std::string summary = write_governor_check(o, checks);
+  std::printf("%swrote %s and %s\n", summary.c_str(), (o.out / "governor.json").string().c_str(),
+              (o.out / "governor.csv").string().c_str());
+}
+
 }  // namespace
 
 void add_lab_command(CLI::App& app) {
@@ -342,6 +380,25 @@ void add_lab_command(CLI::App& app) {
   stability->add_flag("--no-report", st->no_report, "The tables alone: no maps, no report");
   stability->add_flag("--quiet", st->quiet, "No progress lines");
   stability->callback([st] { run_stability_command(*st); });
+
+  auto gv = std::make_shared<GovernorArgs>();
+  CLI::App* governor = lab->add_subcommand(
+      "governor",
+      "Check the governor: on every canonical scene, its choice's error against the ground "
+      "truth and its cost against the cheapest that meets the budget in the lab's table; on "
+      "views held out of the table (the stability map's one-axis cells with a cached ground "
+      "truth), its choice's error. Writes OUT/governor.json and .csv.");
+  governor->add_option("--budget", gv->options.budgets, "Error budgets, percent (default 2 5 10)");
+  governor->add_option("--error-model", gv->error_model,
+                       "The governor's table (default data/lab/error_model.json)");
+  governor->add_option("--frames-per-model", gv->options.frames_per_model,
+                       "Frames a model change's cost is spread over (0: the frame's cost alone)")
+      ->capture_default_str();
+  governor->add_option("--out", gv->out, "Output folder")->capture_default_str();
+  governor->add_flag("--canonical-only", gv->canonical_only, "No held-out views");
+  governor->add_flag("--redo", gv->options.redo, "Check views already checked again");
+  governor->add_flag("--quiet", gv->quiet, "No progress lines");
+  governor->callback([gv] { run_governor_command(*gv); });
 }
 
 }  // namespace planet::apps

@@ -9,6 +9,8 @@
 #include "core/progress.h"
 #include "core/version.h"
 #include "render/frame.h"
+#include "render/governor.h"
+#include "render/technique_switch.h"
 #include "terrain/ground.h"
 
 #include <fmt/format.h>
@@ -32,7 +34,7 @@ constexpr double kTerrainWaitSeconds = 300.0;
 nlohmann::json sidecar(const FlightScript& script, const FlightPath& path, const Geodesy& geodesy,
                        int frame, double t, const Camera& camera, double exposure,
                        const glm::dvec3& sun, const FrameStats& stats,
-                       const TerrainStats& terrain) {
+                       const TerrainStats& terrain, const std::string& technique) {
   Geodetic g = geodesy.geodetic_from_body(camera.pos_body);
   // The passes that ran, with their GPU time, and those whose last result
   // still held and was reused.
@@ -58,7 +60,7 @@ nlohmann::json sidecar(const FlightScript& script, const FlightPath& path, const
         {"body_from_camera_wxyz", {q.w, q.x, q.y, q.z}},
         {"vertical_fov_deg", glm::degrees(camera.vertical_fov)}}},
       {"sun_dir_body", {sun.x, sun.y, sun.z}},
-      {"technique", script.technique},
+      {"technique", technique},
       {"exposure", exposure},
       {"image", {{"width", script.width}, {"height", script.height}}},
       {"gpu_ms", passes},
@@ -193,6 +195,12 @@ void check_keyframes_above_ground(const FlightScript& script) {
   }
 }
 
+std::optional<double> capture_error_budget(const FlightScript& script,
+                                           const CaptureOptions& options) {
+  if (script.technique_named || !script.body.has_atmosphere()) return std::nullopt;
+  return options.error_budget_percent ? options.error_budget_percent : script.error_budget_percent;
+}
+
 CaptureResult run_capture(const FlightScript& script, const CaptureOptions& options) {
   const int total = script.frame_count();
   check_frames(script, options);
@@ -200,9 +208,20 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
   const int end = options.end_frame < 0 ? total : options.end_frame;
   std::optional<AtmosphereModel> atmosphere;
   std::unique_ptr<AtmosphereTechnique> technique;
+  const std::optional<double> budget = capture_error_budget(script, options);
+  std::optional<Governor> governor;
+  if (budget) {
+    GovernorSettings settings;
+    settings.budget_percent = *budget;
+    // The model is the flight's throughout: its tables are built once.
+    settings.frames_per_model = total;
+    governor.emplace(load_error_model(options.error_model_file.empty() ? shipped_error_model_file()
+                                                                       : options.error_model_file),
+                     settings, script.technique);
+  }
   if (script.body.has_atmosphere()) {
     atmosphere = load_atmosphere(script.body);
-    technique = make_technique(script_technique(script));
+    if (!governor) technique = make_technique(script_technique(script));
   }
   std::filesystem::create_directories(options.out_dir);
   const auto finished_marker = options.out_dir / "capture.json";
@@ -219,6 +238,19 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
   renderer.set_body(script.body, atmosphere, std::move(technique));
   FlightPath path(script);
   Geodesy geodesy(script.body.shape);
+  std::optional<TechniqueSwitch> switcher;
+  auto decide = [&](int frame) {
+    double t = script.frame_time(frame);
+    return governor->decide(
+        view_features(script.body, *atmosphere, path.camera_at(t).pos_body, path.sun_dir_at(t)));
+  };
+  if (governor) {
+    switcher.emplace(renderer, "");
+    // The frames before the slice, decided but not drawn: the governor's
+    // hysteresis and fades count frames, and a slice must choose as the
+    // whole run does.
+    for (int frame = 0; frame < first; ++frame) decide(frame);
+  }
 
   CaptureResult result;
   Progress progress("capture " + script.name, end - first, "frame", !options.progress);
@@ -237,10 +269,17 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
     Camera camera = path.camera_at(t);
     double exposure = path.exposure_at(t);
     glm::dvec3 sun = path.sun_dir_at(t);
+    std::optional<GovernorDecision> decision;
+    if (governor) {
+      decision = decide(frame);
+      switcher->apply(*decision, *atmosphere);
+    }
     FrameStats stats = renderer.render(camera, sun, exposure);
     std::string stem = fmt::format("frame_{:05d}", frame);
     nlohmann::json side = sidecar(script, path, geodesy, frame, t, camera, exposure, sun, stats,
-                                  renderer.terrain_stats());
+                                  renderer.terrain_stats(),
+                                  decision ? decision->choice : script.technique);
+    if (decision) side["governor"] = decision->to_json(*budget);
     write_exr(options.out_dir / (stem + ".exr"), script.width, script.height, renderer.read_hdr(),
               frame_exr_extras(script, path, t, camera, side, renderer));
     write_png(options.out_dir / (stem + ".png"), script.width, script.height, renderer.read_ldr());
@@ -259,7 +298,7 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
       {"frames", {{"first", first}, {"end", end}, {"total_in_flight", total}}},
       {"frame_rate", script.frame_rate},
       {"image", {{"width", script.width}, {"height", script.height}}},
-      {"technique", script.technique},
+      {"technique", budget ? fmt::format("governor, budget {:g} %", *budget) : script.technique},
       {"wall_seconds", result.wall_seconds},
   };
   // A share says what it is a share of, for the merge (capture_shares.h);

@@ -9,6 +9,7 @@
 #include "sim/flight_script.h"
 
 #include <filesystem>
+#include <optional>
 #include <functional>
 #include <stdexcept>
 
@@ -24,7 +25,16 @@ struct CaptureOptions {
   // Which share of a capture split over a cluster this run is
   // (capture_shares.h); capture.json records it for the merge.
   Share share;
+  // --error-budget: the governor chooses each frame's technique (unless the
+  // script names one, which wins), from this table (empty: the shipped one).
+  std::optional<double> error_budget_percent;
+  std::filesystem::path error_model_file;
 };
+
+// The budget a capture of `script` runs the governor with: the command
+// line's, else the script's; none where the script names its technique.
+std::optional<double> capture_error_budget(const FlightScript& script,
+                                           const CaptureOptions& options);
 
 struct CaptureResult {
   int frames = 0;

@@ -281,8 +281,7 @@ GovernorDecision Governor::decide(const ViewFeatures& view) {
   std::vector<Prediction> all = predict(view, &d.classes, &d.distance);
   auto advance_fade = [&] {
     if (fading_from_.empty()) return;
-    ++fade_frame_;
-    double w = 1.0 - smoothstep(double(fade_frame_) / std::max(settings_.fade_frames, 1));
+    double w = 1.0 - smoothstep(double(fade_frame_++) / std::max(settings_.fade_frames, 1));
     if (w <= 0.0) {
       fading_from_.clear();
       return;

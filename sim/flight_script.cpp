@@ -81,7 +81,20 @@ FlightScript load_flight_script(const std::filesystem::path& file) {
   s.vertical_fov = glm::radians(root.number_or("vertical_fov_deg", 60.0, 1.0, 170.0));
   // The name is checked against the available techniques by the renderer
   // (sim knows no GL), with this file and field in the message.
+  s.technique_named = root.has("technique");
   s.technique = root.string_or("technique", "hillaire");
+  if (root.has("error_budget_pct")) {
+    if (s.technique_named) {
+      root.fail("error_budget_pct",
+                "and \"technique\" both given: a named technique draws every frame, a budget "
+                "lets the governor choose; give one");
+    }
+    double pct = root.number("error_budget_pct", -1e9, 1e9);
+    if (!(pct > 0 && pct <= 1000)) {
+      root.fail("error_budget_pct", fmt::format("{} is not a percentage above 0 and at most 1000", pct));
+    }
+    s.error_budget_percent = pct;
+  }
   s.allow_below_ground = root.boolean_or("allow_below_ground", false);
 
   // The sun: by the clock and the body's ephemeris, or fixed by hand.

@@ -47,6 +47,10 @@ struct FlightScript {
   double frame_rate = 0;
   double exposure = 1;  // multiplies radiance before tone mapping; the default for keyframes
   std::string technique = "hillaire";
+  bool technique_named = false;  // the file names it: it wins over any error budget
+  // "error_budget_pct": the governor chooses each frame's technique within
+  // this error (render/governor.h).
+  std::optional<double> error_budget_percent;
   // With "start_utc" the sun follows the body's ephemeris and the clock
   // (keyframes may set it with "utc" or "clock_s"); without it, the fixed
   // "sun" block holds.

@@ -7,6 +7,7 @@
 #include "apps/fly/fly_session.h"
 #include "atmosphere/gpu/registry.h"
 #include "core/error.h"
+#include "render/governor.h"
 #include "gl/context.h"
 #include "sim/free_flight.h"
 #include "sim/kepler.h"
@@ -45,6 +46,13 @@ void run(const FlyArgs& args) {
                     "from the ground, and the camera stays at least {:g} m above it",
                     args.height_m, FreeFlight::kClearance));
   }
+  if (args.error_budget != 0) checked_error_budget(args.error_budget, "--error-budget");
+  if (args.error_budget > 0 && args.technique_given) {
+    std::fprintf(stderr, "planet: --technique %s wins over --error-budget: the governor is off\n",
+                 args.technique.c_str());
+  }
+  load_error_model(args.error_model.empty() ? shipped_error_model_file()
+                                            : std::filesystem::path(args.error_model));
   try {
     parse_technique(args.technique);
   } catch (const InputError& e) {
@@ -101,7 +109,14 @@ void add_fly_command(CLI::App& app) {
   cmd->add_option("--orbit-inclination", args->orbit_inclination_deg,
                   "Start in a circular orbit at --height with this inclination, degrees");
   cmd->add_option("--time", args->time, "Start time, UTC")->capture_default_str();
-  cmd->add_option("--technique", args->technique, "Atmosphere technique")->capture_default_str();
+  cmd->add_option("--technique", args->technique, "Atmosphere technique (wins over --error-budget)")
+      ->capture_default_str()
+      ->each([args](const std::string&) { args->technique_given = true; });
+  cmd->add_option("--error-budget", args->error_budget,
+                  "Let the governor choose the technique each frame: the cheapest whose "
+                  "predicted error is within PCT percent (also a HUD slider)");
+  cmd->add_option("--error-model", args->error_model,
+                  "The governor's table (default data/lab/error_model.json)");
   cmd->add_option("--exposure", args->exposure, "Exposure")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();

@@ -63,7 +63,13 @@ HudChanges Hud::draw(const HudView& v) {
       fmt::format("{:.1f} fps  gpu {:.0f} ms  {}  {}/{} reused###passes",
                   v.frame_ms > 0 ? 1e3 / v.frame_ms : 0.0, v.gpu_ms, v.technique, v.passes_reused,
                   v.passes_ran + v.passes_reused);
-  if (ImGui::CollapsingHeader(frame_line.c_str())) ImGui::TextUnformatted(v.passes.c_str());
+  if (ImGui::CollapsingHeader(frame_line.c_str())) {
+    if (!v.governor.empty()) {
+      ImGui::TextUnformatted(v.governor.c_str());
+      ImGui::TextWrapped("%s", v.governor_why.c_str());
+    }
+    ImGui::TextUnformatted(v.passes.c_str());
+  }
   if (ImGui::CollapsingHeader("settings")) {
     ImGui::PushItemWidth(kItemWidth);
     if (ImGui::BeginCombo("body (B)", v.body.c_str())) {
@@ -96,6 +102,12 @@ HudChanges Hud::draw(const HudView& v) {
     float log_exposure = float(std::log10(v.exposure));
     if (ImGui::SliderFloat("log exposure", &log_exposure, -3.0f, 3.0f, "%.2f")) {
       changes.exposure = std::pow(10.0, double(log_exposure));
+    }
+    // The governor: off at 0, else the error it may spend, percent.
+    float budget = float(v.error_budget);
+    if (ImGui::SliderFloat("error budget", &budget, 0.0f, 50.0f,
+                           budget > 0 ? "%.1f %%" : "off (technique)", ImGuiSliderFlags_Logarithmic)) {
+      changes.error_budget = double(budget < 0.1f ? 0.0f : budget);
     }
     float lod = v.lod_pixels;
     if (ImGui::SliderFloat("LOD error", &lod, 0.25f, 8.0f, "%.2f px")) changes.lod_pixels = lod;

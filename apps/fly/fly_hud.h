@@ -27,12 +27,16 @@ struct HudView {
   double time_scale = 1;
   double exposure = 1;
   float lod_pixels = 1;
+  double error_budget = 0;   // percent; 0: the governor is off
+  std::string governor;      // its choice, prediction and the most accurate's cost
+  std::string governor_why;  // why, in a line
 };
 
 struct HudChanges {
   std::optional<std::string> body, technique;
   std::optional<double> hours_utc, time_scale, exposure;
   std::optional<float> lod_pixels;
+  std::optional<double> error_budget;  // 0: off
 };
 
 class Hud {

@@ -42,6 +42,8 @@ FlySession::FlySession(const FlyArgs& args, GLFWwindow* window, FlyInput& input,
       exposure_(args.exposure),
       technique_(args.technique) {
   parse_technique(technique_);
+  error_model_ = load_error_model(args.error_model.empty() ? shipped_error_model_file()
+                                                          : std::filesystem::path(args.error_model));
   renderer_ = std::make_unique<FrameRenderer>(std::max(1, int(args.width * args.render_scale)),
                                               std::max(1, int(args.height * args.render_scale)));
   ldr_framebuffer_ = make_framebuffer(renderer_->ldr_texture(), 0);
@@ -50,12 +52,17 @@ FlySession::FlySession(const FlyArgs& args, GLFWwindow* window, FlyInput& input,
   if (!args.flight_file.empty()) {
     FlightScript script = load_flight_script(args.flight_file);
     technique_ = script.technique;
+    if (!args.technique_given && !script.technique_named) {
+      error_budget_ = args.error_budget > 0 ? args.error_budget
+                                            : script.error_budget_percent.value_or(0.0);
+    }
     exposure_ = script.exposure;
     load(script.body.file.string(), false);
     auto scripted = std::make_unique<ScriptedFlight>(std::move(script));
     scripted_ = scripted.get();
     controller_ = std::move(scripted);
   } else {
+    if (!args.technique_given) error_budget_ = args.error_budget;
     load(args.planet, true);
   }
 }
@@ -82,6 +89,16 @@ bool FlySession::frame(double real_dt) {
   }
   Camera cam = camera();
   glm::dvec3 sun = sun_dir();
+  decision_.reset();
+  if (governor_ && atmosphere_) {
+    decision_ = governor_->decide(view_features(body_, *atmosphere_, cam.pos_body, sun));
+    set_progress_observer([this](const std::string& line, double) {
+      glfwSetWindowTitle(window_, fmt::format("{}: {}", kFlyTitle, line).c_str());
+      glfwPollEvents();
+    });
+    switch_->apply(*decision_, *atmosphere_);
+    set_progress_observer(nullptr);
+  }
   stats_ = renderer_->render(cam, sun, exposure_);
   blit();
   apply(hud_.draw(hud_view(cam, sun, real_dt)));
@@ -129,6 +146,39 @@ void FlySession::attach(const Body& body) {
   renderer_->set_body(body, atmosphere, std::move(technique));
   set_progress_observer(nullptr);
   glfwSetWindowTitle(window_, kFlyTitle);
+  atmosphere_ = atmosphere;
+  body_ = body;
+  // The governor starts over on each body, from the technique now drawn.
+  switch_.reset();
+  governor_.reset();
+  if (error_budget_ > 0 && atmosphere) {
+    GovernorSettings settings;
+    settings.budget_percent = error_budget_;
+    switch_.emplace(*renderer_, technique_);
+    governor_.emplace(error_model_, settings, technique_);
+  }
+}
+
+void FlySession::set_error_budget(double percent) {
+  if (percent == error_budget_) return;
+  error_budget_ = percent;
+  if (percent > 0 && governor_) {
+    governor_->set_budget(percent);
+  } else if (percent > 0 && atmosphere_) {
+    // On: it starts from the technique drawn now.
+    GovernorSettings settings;
+    settings.budget_percent = percent;
+    switch_.emplace(*renderer_, technique_);
+    governor_.emplace(error_model_, settings, technique_);
+  } else if (percent <= 0 && governor_) {
+    // Off: its last choice draws on.
+    if (!switch_->current().empty()) technique_ = switch_->current();
+    renderer_->set_fade(nullptr, 0.0);
+    governor_.reset();
+    switch_.reset();
+  }
+  std::printf("error budget: %s\n", percent > 0 ? fmt::format("{:g} %", percent).c_str() : "off");
+  std::fflush(stdout);
 }
 
 // A new body: the pilot starts over the start place (a few km up unless it
@@ -167,6 +217,8 @@ void FlySession::load(const std::string& name, bool from_args) {
 // A new technique: same body, same place.
 void FlySession::set_technique(const std::string& name) {
   technique_ = name;
+  // A technique picked by hand wins over the governor.
+  error_budget_ = 0;
   attach(body_);
   std::printf("technique: %s\n", name.c_str());
   std::fflush(stdout);
@@ -223,7 +275,20 @@ HudView FlySession::hud_view(const Camera& cam, const glm::dvec3& sun, double re
     }
   }
   v.body = body_key_;
-  v.technique = technique_;
+  v.technique = switch_ && !switch_->current().empty() ? switch_->current() : technique_;
+  v.error_budget = error_budget_;
+  if (decision_) {
+    const GovernorDecision& d = *decision_;
+    v.governor = d.governed
+                     ? fmt::format("governor: {} {:.1f} % {:.0f} ms{}\n  best {} {:.2f} % {:.0f} ms",
+                                   d.choice, 100 * d.chosen.error, d.chosen.cost_ms,
+                                   d.fading_from.empty() ? std::string()
+                                                         : fmt::format(" (fading {})", d.fading_from),
+                                   d.most_accurate.choice, 100 * d.most_accurate.error,
+                                   d.most_accurate.cost_ms)
+                     : "governor: " + d.why;
+    v.governor_why = d.why;
+  }
   double day_start = std::floor((clock_.utc() + 43200.0) / 86400.0) * 86400.0 - 43200.0;
   v.hours_utc = (clock_.utc() - day_start) / 3600.0;
   v.time_scale = clock_.scale();
@@ -235,6 +300,7 @@ HudView FlySession::hud_view(const Camera& cam, const glm::dvec3& sun, double re
 void FlySession::apply(const HudChanges& c) {
   if (c.body) load(*c.body, false);
   if (c.technique) set_technique(*c.technique);
+  if (c.error_budget) set_error_budget(*c.error_budget);
   if (c.hours_utc) {
     // Time of day: moves the clock within the current UTC day.
     double day_start = std::floor((clock_.utc() + 43200.0) / 86400.0) * 86400.0 - 43200.0;

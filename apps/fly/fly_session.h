@@ -6,6 +6,8 @@
 #include "apps/fly/fly_input.h"
 #include "gl/texture.h"
 #include "render/frame.h"
+#include "render/governor.h"
+#include "render/technique_switch.h"
 #include "sim/body.h"
 #include "sim/flight_controller.h"
 #include "sim/flight_recorder.h"
@@ -14,6 +16,7 @@
 #include "sim/utc_time.h"
 
 #include <memory>
+#include <optional>
 #include <string>
 
 struct GLFWwindow;
@@ -34,6 +37,9 @@ struct FlyArgs {
   double exposure = 8.0, vertical_fov_deg = 60.0;
   std::string out_dir = ".";
   std::string flight_file;  // fly a script instead of the start place
+  bool technique_given = false;  // --technique on the command line: it wins over a budget
+  double error_budget = 0;       // --error-budget, percent; 0: none
+  std::string error_model;       // the governor's table; empty: the shipped one
 };
 
 class FlySession {
@@ -51,6 +57,8 @@ class FlySession {
   void attach(const Body& body);
   void load(const std::string& name, bool from_args);
   void set_technique(const std::string& name);
+  // A budget (percent) lets the governor choose; 0 turns it off.
+  void set_error_budget(double percent);
   void handle_key(int key);
   void apply(const HudChanges& changes);
   HudView hud_view(const Camera& cam, const glm::dvec3& sun, double real_dt) const;
@@ -67,6 +75,12 @@ class FlySession {
   double exposure_;
   std::string technique_, body_key_;
   Body body_;
+  std::optional<AtmosphereModel> atmosphere_;  // of body_
+  ErrorModel error_model_;
+  double error_budget_ = 0;  // percent; 0: the governor is off
+  std::optional<Governor> governor_;
+  std::optional<TechniqueSwitch> switch_;
+  std::optional<GovernorDecision> decision_;
   std::unique_ptr<Geodesy> geodesy_;  // of body_
   std::unique_ptr<FrameRenderer> renderer_;
   Framebuffer ldr_framebuffer_;  // the renderer's tone-mapped target, to blit from

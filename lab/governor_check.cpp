@@ -1,0 +1,238 @@
+#include "lab/governor_check.h"
+
+#include "core/atomic_file.h"
+#include "core/error.h"
+#include "lab/accuracy.h"
+#include "lab/debiased_error.h"
+#include "lab/reference_cache.h"
+#include "lab/scene_render.h"
+#include "lab/stability.h"
+#include "lab/sweep.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <map>
+
+namespace planet {
+
+namespace {
+
+// The one-axis slices of the stability map: other altitudes, sun
+// elevations, densities, asymmetries, scale heights and radii than the
+// lab's scenes.
+const std::vector<std::string> kHeldOutSlices = {"altitude", "sun",          "density", "g",
+                                                 "scale_height", "radius"};
+
+struct View {
+  Scene scene;
+  bool held_out = false;
+  std::optional<StabilityCell> cell;
+};
+
+nlohmann::json check_to_json(const GovernorCheck& c) {
+  return {{"budget_percent", c.budget_percent},
+          {"view", c.view},
+          {"held_out", c.held_out},
+          {"choice", c.choice},
+          {"predicted_error", c.predicted_error},
+          {"measured_error", c.measured_error},
+          {"measured_high", c.measured_high},
+          {"reference_noise", c.reference_noise},
+          {"cost_ms", c.cost_ms},
+          {"cheapest", c.cheapest},
+          {"cheapest_cost_ms", c.cheapest_cost_ms},
+          {"within_budget", c.within_budget()}};
+}
+
+GovernorCheck check_from_json(const nlohmann::json& j) {
+  GovernorCheck c;
+  c.budget_percent = j.at("budget_percent").get<double>();
+  c.view = j.at("view").get<std::string>();
+  c.held_out = j.at("held_out").get<bool>();
+  c.choice = j.at("choice").get<std::string>();
+  c.predicted_error = j.at("predicted_error").get<double>();
+  c.measured_error = j.at("measured_error").get<double>();
+  c.measured_high = j.at("measured_high").get<double>();
+  c.reference_noise = j.at("reference_noise").get<double>();
+  c.cost_ms = j.at("cost_ms").get<double>();
+  c.cheapest = j.at("cheapest").get<std::string>();
+  c.cheapest_cost_ms = j.at("cheapest_cost_ms").get<double>();
+  return c;
+}
+
+ErrorModel load_model(const GovernorCheckOptions& o) {
+  return load_error_model(o.error_model.empty() ? shipped_error_model_file() : o.error_model);
+}
+
+std::vector<View> views(const GovernorCheckOptions& o, const ErrorModel& model) {
+  std::vector<View> out;
+  for (const ViewClass& c : model.classes) {
+    Scene scene = find_scene(c.scene);
+    scene.width = kLabWidth;
+    scene.height = kLabHeight;
+    out.push_back({scene, false, std::nullopt});
+  }
+  if (!o.held_out) return out;
+  for (const StabilityCell& cell : plan_stability(StabilityOptions{})) {
+    if (cell.point.altitude_m < 0) continue;  // inside the planet: no ground truth
+    bool one_axis = std::any_of(cell.slices.begin(), cell.slices.end(), [](const std::string& s) {
+      return std::find(kHeldOutSlices.begin(), kHeldOutSlices.end(), s) != kHeldOutSlices.end();
+    });
+    if (!one_axis) continue;
+    if (!reference_cached(cell.scene, stability_reference_budget(cell), ReferenceMode::kRgb)) continue;
+    out.push_back({cell.scene, true, cell});
+  }
+  return out;
+}
+
+}  // namespace
+
+void check_governor_options(const GovernorCheckOptions& o) {
+  if (o.budgets.empty()) throw InputError("lab governor: --budget: give at least one");
+  for (double b : o.budgets) checked_error_budget(b, "lab governor --budget");
+  if (!(o.frames_per_model >= 0)) {
+    throw InputError("lab governor --frames-per-model: must be 0 (the frame alone) or more");
+  }
+  load_model(o);
+}
+
+std::vector<GovernorCheck> run_governor_check(
+    const GovernorCheckOptions& o,
+    const std::function<void(int, int, const std::string&)>& progress) {
+  const ErrorModel model = load_model(o);
+  const std::vector<View> all = views(o, model);
+  const int total = int(all.size() * o.budgets.size());
+  int done = 0;
+  std::vector<GovernorCheck> checks;
+  for (const View& v : all) {
+    // The ground truth once per view, and each choice drawn once.
+    std::optional<ReferenceRender> truth;
+    std::map<std::string, std::pair<std::array<double, 2>, double>> measured;
+    for (double budget : o.budgets) {
+      std::filesystem::path file = o.out / "views" / fmt::format("{:g}", budget) /
+                                   (v.scene.name + ".json");
+      if (progress) progress(done++, total, fmt::format("{} at {:g} %", v.scene.name, budget));
+      if (!o.redo && std::filesystem::exists(file)) {
+        std::ifstream in(file);
+        try {
+          checks.push_back(check_from_json(nlohmann::json::parse(in)));
+          continue;
+        } catch (const std::exception&) {
+          // Not whole: measured again.
+        }
+      }
+      GovernorSettings settings;
+      settings.budget_percent = budget;
+      settings.frames_per_model = o.frames_per_model;
+      Governor governor(model, settings, "hillaire");
+      Body body = scene_body(v.scene);
+      AtmosphereModel atmosphere = scene_atmosphere(v.scene, body);
+      const ViewFeatures features =
+          view_features(body, atmosphere, v.scene.camera.pos_body, v.scene.sun_dir_body);
+      GovernorDecision d = governor.decide(features);
+      GovernorCheck c;
+      c.budget_percent = budget;
+      c.view = v.scene.name;
+      c.held_out = v.held_out;
+      c.choice = d.choice;
+      c.predicted_error = d.chosen.error;
+      c.cost_ms = d.chosen.cost_ms;
+      if (!measured.count(d.choice)) {
+        if (!truth) {
+          PathBudget paths = v.cell ? stability_reference_budget(*v.cell)
+                                    : sweep_reference_budget(SweepOptions{}, v.scene);
+          truth = reference_render(v.scene, paths, ReferenceMode::kRgb);
+        }
+        ImageRGB image = render_scene_with(v.scene, d.choice);
+        auto e = debiased_error(image, truth->image, truth->noise, sun_disk_mask(v.scene));
+        double worst = 0, high = 0, noise = 0;
+        for (const DebiasedError& x : e) {
+          worst = std::max(worst, x.relative(x.debiased_rmse));
+          high = std::max(high, x.relative(x.high));
+          noise = std::max(noise, x.relative(std::sqrt(std::max(x.rmse * x.rmse -
+                                                                    x.debiased_rmse * x.debiased_rmse,
+                                                                0.0))));
+        }
+        measured[d.choice] = {{worst, high}, noise};
+      }
+      c.measured_error = measured[d.choice].first[0];
+      c.measured_high = measured[d.choice].first[1];
+      c.reference_noise = measured[d.choice].second;
+      if (!v.held_out) {
+        // The exhaustive table's cheapest within budget, by the same cost.
+        for (const Prediction& p : governor.predict(features)) {
+          if (p.error <= budget / 100.0) {
+            c.cheapest = p.choice;
+            c.cheapest_cost_ms = p.cost_ms;
+            break;
+          }
+        }
+      }
+      std::filesystem::create_directories(file.parent_path());
+      write_file_atomically(file, check_to_json(c).dump(2) + "\n");
+      checks.push_back(c);
+    }
+  }
+  if (progress) progress(total, total, "");
+  return checks;
+}
+
+std::string write_governor_check(const GovernorCheckOptions& o,
+                                 const std::vector<GovernorCheck>& checks) {
+  nlohmann::json j = {{"frames_per_model", o.frames_per_model}, {"checks", nlohmann::json::array()}};
+  std::string csv =
+      "budget_percent,view,held_out,choice,predicted_error,measured_error,measured_high,"
+      "reference_noise,cost_ms,cheapest,cheapest_cost_ms,within_budget\n";
+  for (const GovernorCheck& c : checks) {
+    j["checks"].push_back(check_to_json(c));
+    csv += fmt::format("{:g},{},{},\"{}\",{:.6f},{:.6f},{:.6f},{:.6f},{:.3f},\"{}\",{:.3f},{}\n",
+                       c.budget_percent, c.view, c.held_out ? 1 : 0, c.choice, c.predicted_error,
+                       c.measured_error, c.measured_high, c.reference_noise, c.cost_ms, c.cheapest,
+                       c.cheapest_cost_ms, c.within_budget() ? 1 : 0);
+  }
+  std::string summary;
+  for (double budget : o.budgets) {
+    int scenes = 0, scenes_within = 0, scenes_cheap = 0, scenes_none = 0, held = 0,
+        held_within = 0, held_uncertain = 0;
+    std::string misses;
+    for (const GovernorCheck& c : checks) {
+      if (c.budget_percent != budget) continue;
+      if (!c.held_out && c.cheapest.empty()) {
+        // Nothing in the table meets the budget there: the most accurate drew.
+        ++scenes_none;
+        misses += fmt::format("    {}: nothing meets {:g} %; {} drew, measured {:.2f} %\n", c.view,
+                              budget, c.choice, 100 * c.measured_error);
+      } else if (!c.held_out) {
+        ++scenes;
+        scenes_within += c.within_budget() ? 1 : 0;
+        bool cheap = c.cost_ms <= 1.10 * c.cheapest_cost_ms;
+        scenes_cheap += cheap ? 1 : 0;
+        if (!c.within_budget() || !cheap) {
+          misses += fmt::format("    {}: {} measured {:.2f} %, {:.1f} ms against {} {:.1f} ms\n",
+                                c.view, c.choice, 100 * c.measured_error, c.cost_ms,
+                                c.cheapest.empty() ? "none within" : c.cheapest,
+                                c.cheapest_cost_ms);
+        }
+      } else {
+        ++held;
+        held_within += c.within_budget() ? 1 : 0;
+        held_uncertain += c.reference_noise * 100.0 > budget ? 1 : 0;
+      }
+    }
+    summary += fmt::format(
+        "budget {:g} %: of the {} canonical scenes where a choice meets it, {} within budget "
+        "measured, {} within 10 % of the cheapest that meets it ({} where none does); held-out "
+        "views {}/{} within budget ({:.1f} %; {} with a ground truth noisier than the budget)\n{}",
+        budget, scenes, scenes_within, scenes_cheap, scenes_none, held_within, held,
+        held ? 100.0 * held_within / held : 0.0, held_uncertain, misses);
+  }
+  j["summary"] = summary;
+  write_file_atomically(o.out / "governor.json", j.dump(2) + "\n");
+  write_file_atomically(o.out / "governor.csv", csv);
+  return summary;
+}
+
+}  // namespace planet

@@ -1,0 +1,59 @@
+#pragma once
+// The governor checked, not assumed: on every canonical scene its choice is
+// drawn and measured against the ground truth, and its cost set against the
+// cheapest choice that the lab's exhaustive table says meets the budget; on
+// views held out of the table (the stability map's one-axis cells: other
+// altitudes, sun elevations and variants of each body), its choice is drawn
+// and measured against the cell's cached ground truth. One file per (budget,
+// view), so that a stopped check goes on where it stopped.
+#include "render/governor.h"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace planet {
+
+struct GovernorCheckOptions {
+  std::vector<double> budgets{2.0, 5.0, 10.0};  // percent
+  std::filesystem::path error_model;            // empty: the shipped table
+  std::filesystem::path out = "out/lab/governor";
+  // Held-out views: the stability map's one-axis slices of these bodies
+  // whose ground truth is cached; none: the canonical scenes alone.
+  bool held_out = true;
+  double frames_per_model = 600;                // as a window spreads a model change
+  bool redo = false;
+};
+
+struct GovernorCheck {
+  double budget_percent = 0;
+  std::string view;            // a canonical scene or a stability cell
+  bool held_out = false;
+  std::string choice;
+  double predicted_error = 0, measured_error = 0, measured_high = 0;  // fractions
+  double reference_noise = 0;  // the ground truth's, relative, worst channel
+  double cost_ms = 0;          // the choice's predicted cost
+  // Canonical scenes: the cheapest choice within budget in the table, by
+  // the same cost (none: nothing meets it), and the choice's cost over its.
+  std::string cheapest;
+  double cheapest_cost_ms = 0;
+  bool within_budget() const { return measured_error <= budget_percent / 100.0; }
+};
+
+// InputError for a budget out of range or a table that does not load.
+void check_governor_options(const GovernorCheckOptions& options);
+
+// Needs a GL context; `progress` sees (done, all, the view now).
+std::vector<GovernorCheck> run_governor_check(
+    const GovernorCheckOptions& options,
+    const std::function<void(int, int, const std::string&)>& progress);
+
+// OUT/governor.json and OUT/governor.csv, and the summary per budget as a
+// person reads it (returned).
+std::string write_governor_check(const GovernorCheckOptions& options,
+                                 const std::vector<GovernorCheck>& checks);
+
+}  // namespace planet
