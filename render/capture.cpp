@@ -20,6 +20,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -215,6 +216,12 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
     settings.budget_percent = *budget;
     // The model is the flight's throughout: its tables are built once.
     settings.frames_per_model = total;
+    // A switch waits half a second of the flight and fades over one, in at
+    // least a few frames.
+    settings.dwell_frames = std::max(3, int(std::lround(0.5 * script.frame_rate)));
+    settings.fade_frames = options.switch_fade_frames > 0
+                               ? options.switch_fade_frames
+                               : std::max(4, int(std::lround(1.0 * script.frame_rate)));
     governor.emplace(load_error_model(options.error_model_file.empty() ? shipped_error_model_file()
                                                                        : options.error_model_file),
                      settings, script.technique);

@@ -29,6 +29,9 @@ struct CaptureOptions {
   // script names one, which wins), from this table (empty: the shipped one).
   std::optional<double> error_budget_percent;
   std::filesystem::path error_model_file;
+  // Frames a switch fades over: 0 from the frame rate (a second, at least
+  // 4); 1 switches at once (a pop, for the tests that must see one).
+  int switch_fade_frames = 0;
 };
 
 // The budget a capture of `script` runs the governor with: the command

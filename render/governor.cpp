@@ -98,7 +98,7 @@ double view_distance(const ViewFeatures& a, const ViewFeatures& b) {
   auto height = [](const ViewFeatures& v) {
     return std::log10(1.0 + std::max(v.altitude_m, 0.0) / v.shell_m);
   };
-  double d_height = (height(a) - height(b)) / 0.5;
+  double d_height = (height(a) - height(b)) / 0.15;
   double d_sun = (a.sun_elevation_deg - b.sun_elevation_deg) / 10.0;
   double d_tau = std::log(std::max(a.optical_depth, 1e-9) / std::max(b.optical_depth, 1e-9)) /
                  std::log(3.0);
@@ -223,22 +223,34 @@ Governor::Governor(ErrorModel model, GovernorSettings settings, std::string fall
 std::vector<Prediction> Governor::predict(const ViewFeatures& view,
                                           std::vector<std::string>* classes,
                                           double* distance) const {
+  // A body the table has: its own rows, and the other bodies' rows a
+  // little further off (an atmosphere's errors follow its optical depth,
+  // asymmetry, altitude and sun more than its name: a dense Mars is more
+  // like a dense Earth than like Mars). A body it does not have: none.
+  constexpr double kOtherBody = 1.5;
+  const bool known = std::any_of(model_.classes.begin(), model_.classes.end(),
+                                 [&](const ViewClass& c) { return c.view.body == view.body; });
+  if (!known) return {};
   std::vector<std::pair<double, const ViewClass*>> near;
   for (const ViewClass& c : model_.classes) {
-    double d = view_distance(view, c.view);
-    if (std::isfinite(d)) near.emplace_back(d, &c);
+    ViewFeatures same = c.view;
+    same.body = view.body;
+    double d = view_distance(view, same) + (c.view.body == view.body ? 0.0 : kOtherBody);
+    near.emplace_back(d, &c);
   }
-  if (near.empty()) return {};
   std::sort(near.begin(), near.end(),
             [](const auto& a, const auto& b) { return a.first < b.first; });
   // One of the lab's own views: its row alone. Elsewhere every row within
-  // half a class of the nearest, each choice at the worst of them: a view
-  // between two measured ones is taken to be as hard as the harder.
+  // half a class of the nearest, or half the nearest's distance where that
+  // is more, each choice at the worst of them: a view between measured ones
+  // is taken to be as hard as the hardest, and the further it is from any,
+  // the more of them it is taken to be as hard as.
   constexpr double kSameView = 1e-6, kNear = 0.5;
   const double nearest = near.front().first;
+  const double reach = nearest < kSameView ? kSameView : nearest + std::max(kNear, 0.5 * nearest);
   std::vector<const ViewClass*> used;
   for (const auto& [d, c] : near) {
-    if (d <= (nearest < kSameView ? kSameView : nearest + kNear)) used.push_back(c);
+    if (d <= reach) used.push_back(c);
   }
   if (classes) {
     classes->clear();
@@ -265,7 +277,8 @@ std::vector<Prediction> Governor::predict(const ViewFeatures& view,
     if (!everywhere) continue;
     p.cost_ms = p.frame_ms;
     auto change = model_.model_change_ms.find(e.choice);
-    if (settings_.frames_per_model > 0 && change != model_.model_change_ms.end()) {
+    if (settings_.frames_per_model > 0 && change != model_.model_change_ms.end() &&
+        !built_.count(e.choice)) {
       p.cost_ms += change->second / settings_.frames_per_model;
     }
     out.push_back(p);
@@ -361,6 +374,7 @@ GovernorDecision Governor::decide(const ViewFeatures& view) {
   }
   d.choice = current_;
   d.chosen = *current;
+  built_.insert(current_);
   d.within_budget = current->error <= budget;
   if (!fading_from_.empty() && fade_frame_ == 0) {
     // The frame of the switch shows the old one whole; the fade starts after.

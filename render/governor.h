@@ -9,10 +9,11 @@
 // camera's height against the shell's thickness, the sun's elevation at the
 // point below the camera, the air's vertical optical depth and its Mie
 // asymmetry, and the body's size. The table's rows are the lab's canonical
-// scenes described the same way; a view is predicted from the rows of its
-// body nearest to it, and where it is not one of them, from the worst of
-// those near it (a view between two measured ones is assumed as bad as the
-// worse).
+// scenes described the same way; a view is predicted from the rows nearest
+// to it (another body's a little further off than its own), and where it
+// is not one of them, from the worst of those near it, more of them the
+// further it is (a view between measured ones is assumed as bad as the
+// worst).
 #include "atmosphere/model.h"
 #include "sim/body.h"
 
@@ -20,6 +21,7 @@
 
 #include <filesystem>
 #include <map>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -42,9 +44,10 @@ ViewFeatures view_features(const Body& body, const AtmosphereModel& model,
                            const glm::dvec3& camera_pos_body, const glm::dvec3& sun_dir_body);
 
 // How far apart two views are, in the units the governor weighs them by
-// (about 1: a different view class): a decade of altitude in shell
-// thicknesses above the ground, 10 degrees of sun, a factor of 3 in optical
-// depth, 0.1 in g, a decade of radius. Infinite between two bodies.
+// (about 1: a different view class): 0.15 of a decade of (1 + altitude in
+// shell thicknesses), so that from inside the shell to 400 km above Earth's
+// is nearly 5, 10 degrees of sun, a factor of 3 in optical depth, 0.1 in g,
+// a decade of radius. Infinite between two bodies.
 double view_distance(const ViewFeatures& a, const ViewFeatures& b);
 
 // One (technique, quality) measured on one of the lab's views.
@@ -88,7 +91,8 @@ struct Prediction {
   std::string choice;
   double error = 0;         // fraction
   double frame_ms = 0;      // per frame, model unchanged
-  double cost_ms = 0;       // frame_ms plus the model change spread over frames_per_model
+  double cost_ms = 0;       // frame_ms, plus the model change spread over frames_per_model
+                            // where its tables are not built yet
 };
 
 struct GovernorSettings {
@@ -138,6 +142,8 @@ class Governor {
                                   double* distance = nullptr) const;
 
   void set_budget(double percent) { settings_.budget_percent = percent; }
+  // The model changed: every choice's tables are to be built again.
+  void model_changed() { built_.clear(); }
   const GovernorSettings& settings() const { return settings_; }
   const ErrorModel& model() const { return model_; }
 
@@ -150,6 +156,9 @@ class Governor {
   int candidate_frames_ = 0;
   std::string fading_from_;
   int fade_frame_ = 0;
+  // The choices drawn since the model last changed: their tables are built
+  // (TechniqueSwitch keeps them), so a switch back costs no model change.
+  std::set<std::string> built_;
 };
 
 }  // namespace planet

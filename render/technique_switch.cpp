@@ -57,6 +57,15 @@ void TechniqueSwitch::apply(const GovernorDecision& decision, const AtmosphereMo
   AtmosphereTechnique* fading = nullptr;
   if (!decision.fading_from.empty() && decision.fading_from != current_) {
     fading = kept(decision.fading_from, model);
+    if (!fading) {
+      // A capture's slice that starts within a fade: the technique faded
+      // from never drew here, and is built now.
+      auto t = make_technique(decision.fading_from);
+      t->update(model);
+      fading = t.get();
+      kept_[decision.fading_from] = std::move(t);
+      order_.push_back(decision.fading_from);
+    }
   }
   renderer_.set_fade(fading, fading ? decision.fade_weight : 0.0);
 }

@@ -98,7 +98,7 @@ TEST(GovernorTest, BetweenTwoViewsThePredictionIsTheWorseOfThem) {
   double distance = 0;
   // Halfway between them: both rows, each choice at the worse.
   ViewFeatures between = view(2, 60);
-  between.altitude_m = 45e3;
+  between.altitude_m = 58e3;
   auto p = g.predict(between, &classes, &distance);
   EXPECT_EQ(classes.size(), 2u);
   EXPECT_GT(distance, 0.0);

@@ -47,7 +47,7 @@ TEST_P(ShippedFlightGLTest, NoFrameIsBlackAndNoKeyframeIsUnderground) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Flights, ShippedFlightGLTest,
-                         ::testing::Values("ascent", "asteroid_landing", "earth_orbit_terminator",
+                         ::testing::Values("ascent", "asteroid_landing", "earth_orbit_terminator", "governed_ascent",
                                            "mars_sunset", "moon_descent", "terrain_asteroid", "terrain_earth",
                                            "terrain_mars"),
                          [](const auto& instance) { return instance.param; });
