@@ -16,6 +16,7 @@
 #include <fmt/format.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 
@@ -46,7 +47,7 @@ void run(const FlyArgs& args) {
                     "from the ground, and the camera stays at least {:g} m above it",
                     args.height_m, FreeFlight::kClearance));
   }
-  if (args.error_budget != 0) checked_error_budget(args.error_budget, "--error-budget");
+  if (!std::isnan(args.error_budget)) checked_error_budget(args.error_budget, "--error-budget");
   if (args.error_budget > 0 && args.technique_given) {
     std::fprintf(stderr, "planet: --technique %s wins over --error-budget: the governor is off\n",
                  args.technique.c_str());

@@ -62,7 +62,7 @@ FlySession::FlySession(const FlyArgs& args, GLFWwindow* window, FlyInput& input,
     scripted_ = scripted.get();
     controller_ = std::move(scripted);
   } else {
-    if (!args.technique_given) error_budget_ = args.error_budget;
+    if (!args.technique_given) error_budget_ = args.error_budget > 0 ? args.error_budget : 0.0;
     load(args.planet, true);
   }
 }

@@ -15,6 +15,7 @@
 #include "sim/scripted_flight.h"
 #include "sim/utc_time.h"
 
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <string>
@@ -38,7 +39,7 @@ struct FlyArgs {
   std::string out_dir = ".";
   std::string flight_file;  // fly a script instead of the start place
   bool technique_given = false;  // --technique on the command line: it wins over a budget
-  double error_budget = 0;       // --error-budget, percent; 0: none
+  double error_budget = std::nan("");  // --error-budget, percent; NaN: none given
   std::string error_model;       // the governor's table; empty: the shipped one
 };
 
