@@ -8,6 +8,9 @@
 
 #include "render/governor.h"
 
+#include "atmosphere/gpu/registry.h"
+#include "lab/scene.h"
+
 #include "core/data_paths.h"
 #include "core/image_io.h"
 #include "gl/context.h"
@@ -20,6 +23,7 @@
 
 #include <cmath>
 #include <fstream>
+#include <set>
 #include <sstream>
 
 namespace planet {
@@ -186,6 +190,31 @@ TEST_F(GovernorGLTest, EverySwitchOfTheAscentFadesWithoutAPop) {
   // space) even a switch at once hides in the flight's own motion; where
   // they do not, the measure must see it.
   EXPECT_GT(worst_hard_of_all, 1.3) << "the measure must see a switch made at once";
+}
+
+TEST(GovernorTableTest, TheShippedTableHasEveryLabSceneAndOnlyChoicesTheRegistryKnows) {
+  ErrorModel m = load_error_model(shipped_error_model_file());
+  std::set<std::string> scenes;
+  for (const ViewClass& c : m.classes) {
+    scenes.insert(c.scene);
+    EXPECT_GE(c.entries.size(), 10u) << c.scene;
+    for (const ErrorModelEntry& e : c.entries) {
+      EXPECT_NO_THROW(parse_technique(e.choice)) << e.choice;
+      EXPECT_GT(e.frame_ms, 0.0) << c.scene << " " << e.choice;
+      EXPECT_TRUE(m.model_change_ms.count(e.choice)) << e.choice;
+    }
+    // Its view is the scene's, as the governor sees it at run time.
+    Scene scene = find_scene(c.scene);
+    Body body = scene_body(scene);
+    ViewFeatures v =
+        view_features(body, scene_atmosphere(scene, body), scene.camera.pos_body, scene.sun_dir_body);
+    EXPECT_LT(view_distance(v, c.view), 1e-6) << c.scene;
+  }
+  for (const Scene& s : canonical_scenes()) {
+    if (scene_body(s).has_atmosphere()) {
+      EXPECT_TRUE(scenes.count(s.name)) << s.name;
+    }
+  }
 }
 
 TEST_F(GovernorGLTest, ANamedTechniqueWinsOverTheBudget) {

@@ -4,7 +4,6 @@
 // refused with their file and field named.
 #include "render/governor.h"
 
-#include "atmosphere/gpu/registry.h"
 #include "core/error.h"
 #include "lab/scene.h"
 #include "sim/flight_script.h"
@@ -179,31 +178,6 @@ TEST(GovernorTest, AViewThatWavesAcrossTwoClassesDoesNotFlap) {
     last = d.choice;
   }
   EXPECT_EQ(switches, 0) << "a choice alternating every two frames must not be followed";
-}
-
-TEST(GovernorTest, TheShippedTableHasEveryLabSceneAndOnlyChoicesTheRegistryKnows) {
-  ErrorModel m = load_error_model(shipped_error_model_file());
-  std::set<std::string> scenes;
-  for (const ViewClass& c : m.classes) {
-    scenes.insert(c.scene);
-    EXPECT_GE(c.entries.size(), 10u) << c.scene;
-    for (const ErrorModelEntry& e : c.entries) {
-      EXPECT_NO_THROW(parse_technique(e.choice)) << e.choice;
-      EXPECT_GT(e.frame_ms, 0.0) << c.scene << " " << e.choice;
-      EXPECT_TRUE(m.model_change_ms.count(e.choice)) << e.choice;
-    }
-    // Its view is the scene's, as the governor sees it at run time.
-    Scene scene = find_scene(c.scene);
-    Body body = scene_body(scene);
-    ViewFeatures v =
-        view_features(body, scene_atmosphere(scene, body), scene.camera.pos_body, scene.sun_dir_body);
-    EXPECT_LT(view_distance(v, c.view), 1e-6) << c.scene;
-  }
-  for (const Scene& s : canonical_scenes()) {
-    if (scene_body(s).has_atmosphere()) {
-      EXPECT_TRUE(scenes.count(s.name)) << s.name;
-    }
-  }
 }
 
 class GovernorFileTest : public ::testing::Test {
