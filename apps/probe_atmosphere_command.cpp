@@ -89,7 +89,7 @@ void run_sky(const ProbeArgs& args) {
       args.paths,
       max_order > 0 ? fmt::format("scattering orders 1 to {}", max_order).c_str()
                          : "all scattering orders",
-      model.ground_albedo);
+      model.ground_albedo.g);
   std::printf("%15s %15s %15s\n", "wavelength_nm", "radiance", "std_error");
   glm::dvec3 rgb(0.0);
   TraceOptions options;

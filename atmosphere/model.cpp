@@ -1,5 +1,6 @@
 #include "atmosphere/model.h"
 
+#include "atmosphere/atmosphere_inputs.h"
 #include "core/error.h"
 
 #include <fmt/format.h>
@@ -10,6 +11,10 @@
 #include <cmath>
 
 namespace planet {
+
+const char* to_string(MiePhase phase) {
+  return phase == MiePhase::kHenyeyGreenstein ? "henyey_greenstein" : "cornette_shanks";
+}
 
 double density_at(const DensityProfile& profile, double altitude) {
   const DensityLayer& l =
@@ -222,6 +227,26 @@ AtmosphereModel with_scale_heights_scaled(AtmosphereModel m, double factor) {
   return m;
 }
 
+AtmosphereModel with_rgb_at_spectral_samples(AtmosphereModel m, size_t i, size_t j, size_t k) {
+  if (!m.spectrum) throw InputError("the atmosphere has no \"spectrum\" to draw three samples of");
+  const AtmosphereSpectrum& s = *m.spectrum;
+  size_t samples[3] = {i, j, k};
+  for (int c = 0; c < 3; ++c) {
+    size_t n = samples[c];
+    if (n >= s.wavelengths_nm.size()) {
+      throw InputError(fmt::format("spectral sample {} of {}", n, s.wavelengths_nm.size()));
+    }
+    m.wavelengths_nm[c] = s.wavelengths_nm[n];
+    m.solar_irradiance[c] = s.solar_irradiance[n];
+    m.rayleigh.scattering[c] = s.rayleigh_scattering[n];
+    m.mie.scattering[c] = s.mie_scattering[n];
+    m.mie.absorption[c] = s.mie_absorption[n];
+    m.absorber.absorption[c] = s.absorber_absorption[n];
+    if (!s.ground_albedo.empty()) m.ground_albedo[c] = s.ground_albedo[n];
+  }
+  return m;
+}
+
 AtmosphereModel parse_atmosphere(JsonObject a) {
   AtmosphereModel m;
   m.bottom_radius = a.number("bottom_radius_m", 1.0, 1e9);
@@ -235,21 +260,40 @@ AtmosphereModel parse_atmosphere(JsonObject a) {
     auto w = a.numbers("wavelengths_nm", 3, 360.0, 830.0);
     m.wavelengths_nm = {w[0], w[1], w[2]};
   }
-  auto e = a.numbers("solar_irradiance", 3, 0.0, 1e6);
-  m.solar_irradiance = {e[0], e[1], e[2]};
   m.sun_angular_radius = glm::radians(a.number("sun_angular_radius_deg", 1e-4, 10.0));
-  m.mie_g = a.number("mie_g", -0.999, 0.999);
-  m.ground_albedo = a.number("ground_albedo", 0.0, 1.0);
-  m.rayleigh = parse_component(a.object("rayleigh"), "rayleigh", PhaseKind::kRayleigh, thickness);
-  if (m.rayleigh.absorption != glm::dvec3(0.0)) {
-    // Molecules absorb through the separate absorber component (ozone).
-    a.fail("rayleigh", "absorption must be zero; give it as the absorber component");
+  if (a.has("inputs")) {
+    for (const char* key : {"solar_irradiance", "mie_g", "mie_phase", "ground_albedo", "rayleigh",
+                            "mie", "absorber", "spectrum"}) {
+      if (a.has(key)) {
+        a.fail(key, "give the coefficients or the inputs they derive from, not both");
+      }
+    }
+    derive_atmosphere(a.object("inputs"), m);
+  } else {
+    auto e = a.numbers("solar_irradiance", 3, 0.0, 1e6);
+    m.solar_irradiance = {e[0], e[1], e[2]};
+    m.mie_g = a.number("mie_g", -0.999, 0.999);
+    std::string phase = a.string_or("mie_phase", "cornette_shanks");
+    if (phase == "henyey_greenstein") {
+      m.mie_phase = MiePhase::kHenyeyGreenstein;
+    } else if (phase != "cornette_shanks") {
+      a.fail("mie_phase", fmt::format("'{}' is not a phase function (cornette_shanks, "
+                                      "henyey_greenstein)",
+                                      phase));
+    }
+    m.ground_albedo = glm::dvec3(a.number("ground_albedo", 0.0, 1.0));
+    m.rayleigh =
+        parse_component(a.object("rayleigh"), "rayleigh", PhaseKind::kRayleigh, thickness);
+    if (m.rayleigh.absorption != glm::dvec3(0.0)) {
+      // Molecules absorb through the separate absorber component (ozone).
+      a.fail("rayleigh", "absorption must be zero; give it as the absorber component");
+    }
+    m.mie = parse_component(a.object("mie"), "mie", PhaseKind::kMie, thickness);
+    if (a.has("absorber")) {
+      m.absorber = parse_component(a.object("absorber"), "absorber", PhaseKind::kNone, thickness);
+    }
+    if (a.has("spectrum")) m.spectrum = parse_spectrum(a.object("spectrum"));
   }
-  m.mie = parse_component(a.object("mie"), "mie", PhaseKind::kMie, thickness);
-  if (a.has("absorber")) {
-    m.absorber = parse_component(a.object("absorber"), "absorber", PhaseKind::kNone, thickness);
-  }
-  if (a.has("spectrum")) m.spectrum = parse_spectrum(a.object("spectrum"));
   a.string_or("source", "");
   a.finish();
   return m;

@@ -31,6 +31,11 @@ double density_at(const DensityProfile& profile, double altitude);
 
 enum class PhaseKind { kRayleigh, kMie, kNone };
 
+// The aerosols' phase function: Cornette and Shanks 1992 (Bruneton 2017's
+// and Hillaire 2020's), or Henyey and Greenstein 1941.
+enum class MiePhase { kCornetteShanks = 0, kHenyeyGreenstein = 1 };
+const char* to_string(MiePhase phase);
+
 struct AtmosphereComponent {
   std::string name;
   PhaseKind phase = PhaseKind::kNone;
@@ -50,6 +55,8 @@ struct AtmosphereSpectrum {
   std::vector<double> mie_scattering;       // 1/m
   std::vector<double> mie_absorption;       // 1/m
   std::vector<double> absorber_absorption;  // 1/m
+  // The ground's albedo per sample; empty: the RGB albedo's (grey) value.
+  std::vector<double> ground_albedo;
 };
 
 struct AtmosphereModel {
@@ -60,7 +67,8 @@ struct AtmosphereModel {
   glm::dvec3 solar_irradiance{1.0};  // at the top of the atmosphere
   double sun_angular_radius = 0;     // radians
   double mie_g = 0;                  // Henyey-Greenstein / Cornette-Shanks asymmetry
-  double ground_albedo = 0;
+  MiePhase mie_phase = MiePhase::kCornetteShanks;
+  glm::dvec3 ground_albedo{0.0};  // at the RGB wavelengths
   AtmosphereComponent rayleigh, mie, absorber;
   // Spectral samples for the ground truth; absent, only RGB renders.
   std::optional<AtmosphereSpectrum> spectrum;
@@ -71,7 +79,9 @@ struct AtmosphereModel {
 constexpr size_t kMinSpectralSamples = 16;
 constexpr double kSpectrumMinNm = 380.0, kSpectrumMaxNm = 780.0;
 
-// Parses and validates the "atmosphere" object of a body file.
+// Parses and validates the "atmosphere" object of a body file: the
+// coefficients given directly, or derived from a day's "inputs"
+// (atmosphere_inputs.h).
 AtmosphereModel parse_atmosphere(JsonObject atmosphere);
 // The body's atmosphere, parsed from its file; InputError naming the file
 // for an airless body.
@@ -96,5 +106,11 @@ AtmosphereModel with_bottom_radius(AtmosphereModel model, double bottom_radius,
 // their coefficients set so that each one's optical depth from the bottom
 // to the top along a vertical stays as it was.
 AtmosphereModel with_scale_heights_scaled(AtmosphereModel model, double factor);
+
+// The model whose three RGB channels are its spectrum's samples i, j and k
+// (solar irradiance, every coefficient, the ground's albedo): how a
+// technique that draws three wavelengths draws the whole spectrum, three
+// at a time. InputError for a model without a spectrum.
+AtmosphereModel with_rgb_at_spectral_samples(AtmosphereModel model, size_t i, size_t j, size_t k);
 
 }  // namespace planet

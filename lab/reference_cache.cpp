@@ -59,7 +59,14 @@ void hash_model(Hasher& h, const AtmosphereModel& m, ReferenceMode mode) {
   h.text(to_string(mode));
   h.number(m.bottom_radius), h.number(m.top_radius), h.vec(m.wavelengths_nm),
       h.vec(m.solar_irradiance), h.number(m.sun_angular_radius), h.number(m.mie_g),
-      h.number(m.ground_albedo);
+      h.number(m.ground_albedo.g);
+  // Added with the derived atmospheres; absent from the hash where they
+  // are at their old defaults, so that references cached before stay valid.
+  if (m.ground_albedo.r != m.ground_albedo.g || m.ground_albedo.b != m.ground_albedo.g) {
+    h.vec(m.ground_albedo);
+  }
+  if (m.mie_phase != MiePhase::kCornetteShanks) h.text(to_string(m.mie_phase));
+  if (m.spectrum && !m.spectrum->ground_albedo.empty()) h.list(m.spectrum->ground_albedo);
   for (const AtmosphereComponent* c : {&m.rayleigh, &m.mie, &m.absorber}) {
     h.vec(c->scattering), h.vec(c->absorption), h.profile(c->density);
   }

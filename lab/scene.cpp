@@ -151,9 +151,11 @@ Body scene_body(const Scene& scene) {
   // the terrain, the frame draws the same ground: the body's relief and
   // palette give way to a smooth surface of that one grey (terrain/'s
   // schema: no noise layers, every palette colour the same).
-  if (body.has_atmosphere() && body.atmosphere.contains("ground_albedo")) {
-    double a = body.atmosphere["ground_albedo"].get<double>();
-    nlohmann::json grey = {a, a, a};
+  if (body.has_atmosphere()) {
+    // The albedo at the model's three wavelengths: one grey, or a spectrum's
+    // (derived atmospheres, atmosphere_inputs.h).
+    glm::dvec3 a = load_atmosphere(body).ground_albedo;
+    nlohmann::json grey = {a.r, a.g, a.b};
     body.terrain = {
         {"max_level", 12},
         {"height", {{"type", "procedural"}, {"layers", nlohmann::json::array()}}},

@@ -11,7 +11,8 @@ AtmosphereBlock make_atmosphere_block(const AtmosphereModel& m) {
   b.mie_scattering = glm::vec4(glm::vec3(m.mie.scattering), 0.0f);
   b.mie_extinction = glm::vec4(glm::vec3(m.mie.extinction()), 0.0f);
   b.absorption_extinction = glm::vec4(glm::vec3(m.absorber.extinction()), 0.0f);
-  b.ground_albedo = glm::vec4(glm::vec3(float(m.ground_albedo)), 0.0f);
+  // w: the Mie phase function, 0 Cornette-Shanks, 1 Henyey-Greenstein.
+  b.ground_albedo = glm::vec4(glm::vec3(m.ground_albedo), float(int(m.mie_phase)));
   const DensityProfile* profiles[3] = {&m.rayleigh.density, &m.mie.density, &m.absorber.density};
   for (int i = 0; i < 3; ++i) {
     for (int k = 0; k < 2; ++k) {

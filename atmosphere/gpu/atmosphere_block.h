@@ -15,7 +15,7 @@ struct AtmosphereBlock {
   glm::vec4 mie_scattering;
   glm::vec4 mie_extinction;
   glm::vec4 absorption_extinction;
-  glm::vec4 ground_albedo;
+  glm::vec4 ground_albedo;  // w: the Mie phase function (MiePhase)
   glm::vec4 layer_a[6];
   glm::vec4 layer_b[6];
 };

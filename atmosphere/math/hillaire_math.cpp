@@ -70,7 +70,7 @@ Real mie_column_lookup(IN(Atmosphere) atmosphere, Real r, Real mu) {
 
 // The forward gain summed directly, as the GPU's LUT holds it at its texels.
 Real forward_gain_lookup(IN(Atmosphere) atmosphere, Real nu, Real tau) {
-  return forward_gain_times_extinction(atmosphere.mie_g, nu, tau);
+  return forward_gain_times_extinction(atmosphere.mie_g, atmosphere.mie_phase_hg, nu, tau);
 }
 
 FieldMoments gather_order_from(const float* previous_order, const Atmosphere& atmosphere, Real r,

@@ -24,7 +24,7 @@ void multiple_scattering_lut_r_mu_s_from_uv(const Atmosphere& atmosphere, Real u
                                             Real& mu_s);
 Real field_basis(int part, Real x, Real y, Real z);
 Real3 field_part(const FieldMoments& f, int part);
-Real forward_gain_times_extinction(Real g, Real nu, Real tau);
+Real forward_gain_times_extinction(Real g, Real hg, Real nu, Real tau);
 Real mie_column_to_top(const Atmosphere& atmosphere, Real r, Real mu, int steps);
 void forward_gain_lut_nu_tau_from_uv(Real u, Real v, Real& nu, Real& tau);
 Real3 multiple_scattering_texel(const Atmosphere& atmosphere, Real r, Real mu_s);

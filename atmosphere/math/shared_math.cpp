@@ -36,6 +36,7 @@ Atmosphere to_shared(const AtmosphereModel& m) {
   a.absorption_extinction = m.absorber.extinction();
   a.absorption_density = m.absorber.density;
   a.ground_albedo = Real3(m.ground_albedo);
+  a.mie_phase_hg = m.mie_phase == MiePhase::kHenyeyGreenstein ? 1.0 : 0.0;
   return a;
 }
 

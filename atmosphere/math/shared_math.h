@@ -32,6 +32,9 @@ Real henyey_greenstein_phase(Real g, Real nu);
 Real cornette_shanks_phase(Real g, Real nu);
 Real cornette_shanks_term(Real g, int l, Real g_l_minus_2);
 Real cornette_shanks_legendre(Real g, int l);
+Real mie_phase(const Atmosphere& atmosphere, Real nu);
+Real mie_legendre(const Atmosphere& atmosphere, int l);
+Real mie_series_term(Real hg, Real g, int l, Real g_l_minus_2);
 
 // lut_coordinates.glsl
 Real texture_coord_from_unit_range(Real x, Real texture_size);

@@ -1,5 +1,6 @@
 #include "atmosphere/reference/medium.h"
 
+#include "atmosphere/math/shared_math.h"
 #include "atmosphere/spectrum.h"
 #include "core/error.h"
 
@@ -17,12 +18,17 @@ ReferenceMode parse_reference_mode(const std::string& text) {
   throw InputError(fmt::format("'{}' is not a reference mode (rgb, spectral)", text));
 }
 
+double Medium::mie_phase_value(double nu) const {
+  return mie_phase == MiePhase::kHenyeyGreenstein ? shared::henyey_greenstein_phase(mie_g, nu)
+                                                  : shared::cornette_shanks_phase(mie_g, nu);
+}
+
 Medium make_medium(const AtmosphereModel& model, ReferenceMode mode) {
   Medium m;
   m.bottom_radius = model.bottom_radius;
   m.top_radius = model.top_radius;
   m.mie_g = model.mie_g;
-  m.ground_albedo = model.ground_albedo;
+  m.mie_phase = model.mie_phase;
   m.sun_angular_radius = model.sun_angular_radius;
   m.rayleigh_density = model.rayleigh.density;
   m.mie_density = model.mie.density;
@@ -36,6 +42,7 @@ Medium make_medium(const AtmosphereModel& model, ReferenceMode mode) {
       c.mie_absorption = model.mie.absorption[i];
       c.absorber_absorption = model.absorber.extinction()[i];
       c.solar_irradiance = model.solar_irradiance[i];
+      c.ground_albedo = model.ground_albedo[i];
       c.rgb_weight[i] = 1.0;
       m.channels.push_back(c);
     }
@@ -54,6 +61,7 @@ Medium make_medium(const AtmosphereModel& model, ReferenceMode mode) {
     c.mie_absorption = s.mie_absorption[i];
     c.absorber_absorption = s.absorber_absorption[i];
     c.solar_irradiance = s.solar_irradiance[i];
+    c.ground_albedo = s.ground_albedo.empty() ? model.ground_albedo.g : s.ground_albedo[i];
     c.rgb_weight = weights[i];
     m.channels.push_back(c);
   }

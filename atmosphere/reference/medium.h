@@ -27,6 +27,7 @@ struct MediumChannel {
   double mie_absorption = 0;
   double absorber_absorption = 0;
   double solar_irradiance = 0;  // W m^-2 nm^-1 at the top of the atmosphere
+  double ground_albedo = 0;     // the Lambertian ground's, at this wavelength
   // This channel's share of linear sRGB: radiance L in this channel adds
   // L * rgb_weight to the pixel (see atmosphere/spectrum.h).
   glm::dvec3 rgb_weight{0.0};
@@ -35,7 +36,9 @@ struct MediumChannel {
 struct Medium {
   double bottom_radius = 0, top_radius = 0;
   double mie_g = 0;
-  double ground_albedo = 0;
+  MiePhase mie_phase = MiePhase::kCornetteShanks;
+  // The aerosols' phase function at cosine nu.
+  double mie_phase_value(double nu) const;
   double sun_angular_radius = 0;
   DensityProfile rayleigh_density{}, mie_density{}, absorber_density{};
   std::vector<MediumChannel> channels;

@@ -161,7 +161,7 @@ double sun_along_segment(const DepthTable& table, const glm::dvec3& start, const
   const MediumChannel& c = table.channel();
   double nu_centre = glm::dot(dir, sun_dir);
   double p_r = shared::rayleigh_phase(nu_centre);
-  double p_m = shared::cornette_shanks_phase(m.mie_g, nu_centre);
+  double p_m = m.mie_phase_value(nu_centre);
   std::array<double, kSunCells + 1> f;
   for (int i = 0; i <= kSunCells; ++i) {
     glm::dvec3 p = start + depth.edge_t(i) * dir;
@@ -186,7 +186,7 @@ double sun_along_segment(const DepthTable& table, const glm::dvec3& start, const
   glm::dvec3 to_sun = reference::sample_cone(sun_dir, cos_alpha, rng);
   double nu = glm::dot(dir, to_sun);
   double scattering = co.scattering_rayleigh * shared::rayleigh_phase(nu) +
-                      co.scattering_mie * shared::cornette_shanks_phase(m.mie_g, nu);
+                      co.scattering_mie * m.mie_phase_value(nu);
   return std::exp(-depth.at(t)) * scattering * c.solar_irradiance *
          transmittance_to_top(table, p, to_sun) / pdf;
 }
@@ -231,7 +231,7 @@ double trace_path(const DepthTable& table, glm::dvec3 origin, glm::dvec3 dir,
       glm::dvec3 to_sun = reference::sample_cone(sun_dir, cos_alpha, rng);
       double cos_sun = glm::dot(normal, to_sun);
       if (cos_sun > 0.0) {
-        radiance += weight * transmittance * c.solar_irradiance * m.ground_albedo / reference::kPi *
+        radiance += weight * transmittance * c.solar_irradiance * c.ground_albedo / reference::kPi *
                     cos_sun * transmittance_to_top(table, normal * m.bottom_radius, to_sun);
       }
     }
@@ -287,20 +287,22 @@ double trace_path(const DepthTable& table, glm::dvec3 origin, glm::dvec3 dir,
       } else {
         double first =
             std::min((x - sunward - rayleigh_share) / (1.0 - sunward - rayleigh_share), 1.0);
-        next = reference::direction_about(dir, reference::sample_cornette_shanks_mu(g, first, rng),
-                                          2.0 * reference::kPi * turn.y);
+        double mu = m.mie_phase == MiePhase::kHenyeyGreenstein
+                        ? reference::sample_henyey_greenstein_mu(g, first)
+                        : reference::sample_cornette_shanks_mu(g, first, rng);
+        next = reference::direction_about(dir, mu, 2.0 * reference::kPi * turn.y);
       }
       if (sunward > 0.0) {
         double mu = glm::dot(dir, next);
         double phase = (co.scattering_rayleigh * shared::rayleigh_phase(mu) +
-                        co.scattering_mie * shared::cornette_shanks_phase(g, mu)) /
+                        co.scattering_mie * m.mie_phase_value(mu)) /
                        co.scattering();
         weight *= phase / (sunward * shared::henyey_greenstein_phase(g, glm::dot(next, sun_dir)) +
                            (1.0 - sunward) * phase);
       }
       dir = next;
     } else {
-      weight *= m.ground_albedo;
+      weight *= c.ground_albedo;
       origin = normal * m.bottom_radius;
       dir = reference::sample_cosine(normal, turn);
     }

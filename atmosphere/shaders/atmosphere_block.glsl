@@ -56,5 +56,6 @@ Atmosphere block_atmosphere() {
   a.absorption_extinction = u_absorption_extinction.rgb;
   a.absorption_density = block_profile(2);
   a.ground_albedo = u_ground_albedo.rgb;
+  a.mie_phase_hg = u_ground_albedo.w;
   return a;
 }

@@ -39,6 +39,9 @@ struct Atmosphere {
   Real3 absorption_extinction;
   DensityProfile absorption_density;
   Real3 ground_albedo;
+  // The aerosols' phase function (MiePhase): 0 Cornette-Shanks, 1
+  // Henyey-Greenstein.
+  Real mie_phase_hg;
 };
 
 const Real kPi = 3.14159265358979323846;

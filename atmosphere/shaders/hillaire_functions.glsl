@@ -110,7 +110,7 @@ Real3 field_lookup(bool previous_order, Real u, Real v, int part) {
 //
 // exp(-tau) forward_gain, bounded (the beam has lost at least exp(-tau)
 // of itself), summed over kForwardGainTerms terms.
-Real forward_gain_times_extinction(Real g, Real nu, Real tau) {
+Real forward_gain_times_extinction(Real g, Real hg, Real nu, Real tau) {
   Real legendre_before = nu;  // P_1
   Real legendre = Real(1.5) * nu * nu - Real(0.5);  // P_2
   Real sum = Real(0.0);
@@ -122,7 +122,7 @@ Real forward_gain_times_extinction(Real g, Real nu, Real tau) {
     legendre = next;
     g_l_minus_2 *= g;
     if (l <= kFieldDegree) continue;
-    Real g_l = cornette_shanks_term(g, l, g_l_minus_2);
+    Real g_l = mie_series_term(hg, g, l, g_l_minus_2);
     sum += Real(2 * l + 1) / (Real(4.0) * kPi) * g_l * (exp((g_l - Real(1.0)) * tau) - exp(-tau)) *
            legendre;
   }
@@ -194,11 +194,10 @@ Real3 scattered_field(IN(Atmosphere) atmosphere, bool previous_order, Real r, Re
                    field_basis(12, x, y, z) * field_lookup(previous_order, u, v, 12) +
                    field_basis(13, x, y, z) * field_lookup(previous_order, u, v, 13) +
                    field_basis(14, x, y, z) * field_lookup(previous_order, u, v, 14);
-  Real g = atmosphere.mie_g;
   Real3 rayleigh = degree_0 + Real(0.1) * degree_2;
-  Real3 mie = degree_0 + cornette_shanks_legendre(g, 1) * degree_1 +
-              cornette_shanks_legendre(g, 2) * degree_2 + cornette_shanks_legendre(g, 3) * degree_3 +
-              cornette_shanks_legendre(g, 4) * degree_4;
+  Real3 mie = degree_0 + mie_legendre(atmosphere, 1) * degree_1 +
+              mie_legendre(atmosphere, 2) * degree_2 + mie_legendre(atmosphere, 3) * degree_3 +
+              mie_legendre(atmosphere, 4) * degree_4;
   return sigma_r * max(rayleigh, Real3(0.0)) + sigma_m * max(mie, Real3(0.0));
 }
 
@@ -271,7 +270,7 @@ void integrate_scattering(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, R
   Real phase_m = source_kind == kSourceSunMie
                      ? Real(1.0)
                      : (source_kind == kSourceSunRayleigh ? Real(0.0)
-                                                          : cornette_shanks_phase(atmosphere.mie_g, nu));
+                                                          : mie_phase(atmosphere, nu));
   Real t_closest = clamp(-dot(o, d), t_start, t_end);
   Real before = t_closest - t_start;
   Real after = t_end - t_closest;

@@ -176,7 +176,11 @@ FieldMoments gather_order(IN(Atmosphere) atmosphere, Real r, Real mu_s, int sour
     for (int j = 0; j < n; ++j) {
       Real nu = henyey_greenstein_row_cosine(g, j, n);
       Real sin_nu = safe_sqrt(Real(1.0) - nu * nu);
-      Real weight = Real(1.5) * (Real(1.0) + nu * nu) / (Real(2.0) + g * g);
+      // The phase over the rows' Henyey-Greenstein density: 1 for it, the
+      // Cornette-Shanks factor for that one.
+      Real weight = atmosphere.mie_phase_hg > Real(0.5)
+                        ? Real(1.0)
+                        : Real(1.5) * (Real(1.0) + nu * nu) / (Real(2.0) + g * g);
       for (int i = 0; i < traced_azimuths(j, n); ++i) {
         Real mirror;
         Real phi = row_azimuth(j, i, n, mirror);

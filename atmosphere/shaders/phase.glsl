@@ -52,3 +52,25 @@ Real cornette_shanks_legendre(Real g, int l) {
   for (int i = 2; i < l; ++i) g_l_minus_2 *= g;
   return cornette_shanks_term(g, l, g_l_minus_2);
 }
+
+// The aerosols' phase function as the model names it (Atmosphere's
+// mie_phase_hg), and its Legendre coefficients: Henyey-Greenstein's are
+// g^l.
+Real mie_phase(IN(Atmosphere) atmosphere, Real nu) {
+  return atmosphere.mie_phase_hg > Real(0.5) ? henyey_greenstein_phase(atmosphere.mie_g, nu)
+                                             : cornette_shanks_phase(atmosphere.mie_g, nu);
+}
+
+Real mie_legendre(IN(Atmosphere) atmosphere, int l) {
+  if (atmosphere.mie_phase_hg < Real(0.5)) return cornette_shanks_legendre(atmosphere.mie_g, l);
+  Real g_l = Real(1.0);
+  for (int i = 0; i < l; ++i) g_l *= atmosphere.mie_g;
+  return g_l;
+}
+
+// The coefficient l >= 2 from g^(l-2), for a series that carries it:
+// Cornette-Shanks's (cornette_shanks_term), or Henyey-Greenstein's g^l
+// where hg is 1.
+Real mie_series_term(Real hg, Real g, int l, Real g_l_minus_2) {
+  return hg > Real(0.5) ? g_l_minus_2 * g * g : cornette_shanks_term(g, l, g_l_minus_2);
+}

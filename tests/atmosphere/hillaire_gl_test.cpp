@@ -126,7 +126,7 @@ TEST_F(HillaireGLTest, ForwardGainLutMatchesCpuSeries) {
     for (int x = 0; x < w; ++x) {
       double nu, tau;
       hillaire::forward_gain_lut_nu_tau_from_uv((x + 0.5) / w, (y + 0.5) / h, nu, tau);
-      double cpu = hillaire::forward_gain_times_extinction(model_.mie_g, nu, tau);
+      double cpu = hillaire::forward_gain_times_extinction(model_.mie_g, 0.0, nu, tau);
       double gpu = lut[(size_t(y) * w + size_t(x)) * 4];
       // 62 terms summed in float, the largest near the peak's 0.4 per sr:
       // a few 1e-7 per sr.

@@ -112,7 +112,7 @@ double spread_distribution(double g, double nu, double tau) {
            (std::exp((g_l - 1.0) * tau) - std::exp(-tau)) * legendre(l, nu);
   }
   return std::exp(-tau) * shared::cornette_shanks_phase(g, nu) +
-         hillaire::forward_gain_times_extinction(g, nu, tau) + low;
+         hillaire::forward_gain_times_extinction(g, 0.0, nu, tau) + low;
 }
 
 TEST(HillaireMathTest, ForwardGainMatchesLightScatteredAtRandom) {
@@ -156,20 +156,20 @@ TEST(HillaireMathTest, ForwardGainMatchesLightScatteredAtRandom) {
 
 TEST(HillaireMathTest, ForwardGainMovesLightWithoutMakingIt) {
   for (double g : {0.75, 0.8}) {
-    EXPECT_EQ(hillaire::forward_gain_times_extinction(g, 0.3, 0.0), 0.0);
+    EXPECT_EQ(hillaire::forward_gain_times_extinction(g, 0.0, 0.3, 0.0), 0.0);
     for (double tau : {0.1, 1.0, 10.0}) {
       // No light made or lost: the gain integrates to zero over the sphere.
       const int n = 200000;
       double total = 0.0, magnitude = 0.0;
       for (int i = 0; i < n; ++i) {
         double nu = -1.0 + 2.0 * (i + 0.5) / n;
-        double gain = hillaire::forward_gain_times_extinction(g, nu, tau);
+        double gain = hillaire::forward_gain_times_extinction(g, 0.0, nu, tau);
         total += gain;
         magnitude += std::abs(gain);
       }
       EXPECT_LT(std::abs(total), 1e-6 * magnitude) << "g " << g << " tau " << tau;
       // Light is moved toward the sun.
-      EXPECT_GT(hillaire::forward_gain_times_extinction(g, 1.0, tau), 0.0);
+      EXPECT_GT(hillaire::forward_gain_times_extinction(g, 0.0, 1.0, tau), 0.0);
     }
   }
 }

@@ -47,7 +47,7 @@ TEST(AtmosphereModelTest, EarthHasTheDesignValues) {
   EXPECT_NEAR(m.mie.absorption.x, 0.404e-6, 1e-18);
   EXPECT_EQ(m.absorber.absorption, glm::dvec3(0.650e-6, 1.881e-6, 0.085e-6));
   EXPECT_EQ(m.mie_g, 0.8);
-  EXPECT_EQ(m.ground_albedo, 0.3);
+  EXPECT_EQ(m.ground_albedo, glm::dvec3(0.3));
 }
 
 TEST(AtmosphereModelTest, EarthSpectrumAgreesWithItsRgbValues) {

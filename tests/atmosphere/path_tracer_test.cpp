@@ -149,7 +149,7 @@ double single_scattering_quadrature(const AtmosphereModel& model, int channel, g
 TEST(PathTracerTest, SingleScatteringAgreesWithQuadrature) {
   AtmosphereModel model = earth_model();
   model.sun_angular_radius = 1e-5;  // the quadrature's point sun
-  model.ground_albedo = 0.0;
+  model.ground_albedo = glm::dvec3(0.0);
   Medium medium = make_medium(model, ReferenceMode::kRgb);
   const ColumnTable table(medium);
   TraceOptions order1;
@@ -289,7 +289,7 @@ ReferenceImage furnace(double ground_albedo, double scattering_scale, glm::dvec3
   AtmosphereModel model = with_scattering_scaled(earth_model(), scattering_scale);
   model.mie.absorption = glm::dvec3(0.0);
   model.absorber.absorption = glm::dvec3(0.0);
-  model.ground_albedo = ground_albedo;
+  model.ground_albedo = glm::dvec3(ground_albedo);
   Medium medium = make_medium(model, ReferenceMode::kRgb);
   ReferenceView view;
   view.width = 8;

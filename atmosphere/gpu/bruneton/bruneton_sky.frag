@@ -53,7 +53,7 @@ vec3 scattering(Atmosphere atmosphere, float r, float mu, float mu_s, float nu, 
 }
 
 vec3 with_phases(Atmosphere atmosphere, vec3 rayleigh, vec3 mie, float nu) {
-  return rayleigh * rayleigh_phase(nu) + mie * cornette_shanks_phase(atmosphere.mie_g, nu);
+  return rayleigh * rayleigh_phase(nu) + mie * mie_phase(atmosphere, nu);
 }
 
 // The camera moved to where the ray enters the atmosphere; false when it

@@ -13,7 +13,7 @@ vec3 order_radiance(Atmosphere atmosphere, float r, float mu, float mu_s, float 
 #ifdef FIRST_ORDER
   vec3 rayleigh = bruneton_scattering_lookup(atmosphere, u_order_rayleigh, r, mu, mu_s, nu, ground).rgb;
   vec3 mie = bruneton_scattering_lookup(atmosphere, u_order_mie, r, mu, mu_s, nu, ground).rgb;
-  return rayleigh * rayleigh_phase(nu) + mie * cornette_shanks_phase(atmosphere.mie_g, nu);
+  return rayleigh * rayleigh_phase(nu) + mie * mie_phase(atmosphere, nu);
 #else
   return bruneton_scattering_lookup(atmosphere, u_order_multiple, r, mu, mu_s, nu, ground).rgb;
 #endif

@@ -115,8 +115,7 @@ void main() {
       // carries the same light: half the solid angle each.
       float c0 = dot(view, omega);
       float c1 = dot(view, vec3(omega.x, -omega.y, omega.z));
-      mie += (0.5 * s_radiance[i]) * (cornette_shanks_phase(atmosphere.mie_g, c0) +
-                                       cornette_shanks_phase(atmosphere.mie_g, c1));
+      mie += (0.5 * s_radiance[i]) * (mie_phase(atmosphere, c0) + mie_phase(atmosphere, c1));
     }
     imageStore(u_density, texel, vec4(sigma_r * rayleigh + sigma_m * mie, 1.0));
   }

@@ -29,7 +29,7 @@ void main() {
 
   float nu = dot(dir, u_sun_dir);
   float phase_r = rayleigh_phase(nu);
-  float phase_m = cornette_shanks_phase(atmosphere.mie_g, nu);
+  float phase_m = mie_phase(atmosphere, nu);
   vec3 luminance = vec3(0.0), throughput = vec3(1.0), f_ms = vec3(0.0);
   float t_previous = 0.0;
   for (int k = 0; k < kAerialPerspectiveSize; ++k) {

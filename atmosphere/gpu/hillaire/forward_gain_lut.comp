@@ -13,6 +13,6 @@ void main() {
   float nu, tau;
   forward_gain_lut_nu_tau_from_uv((float(texel.x) + 0.5) / float(kForwardGainLutWidth),
                                   (float(texel.y) + 0.5) / float(kForwardGainLutHeight), nu, tau);
-  float gain = forward_gain_times_extinction(atmosphere.mie_g, nu, tau);
+  float gain = forward_gain_times_extinction(atmosphere.mie_g, atmosphere.mie_phase_hg, nu, tau);
   imageStore(u_output, texel, vec4(gain, 0.0, 0.0, 1.0));
 }

@@ -136,7 +136,7 @@ void oneil_ray(Atmosphere atmosphere, vec3 camera, vec3 dir, float t_surface, in
 // Shanks's, as the other techniques').
 vec3 oneil_phased(Atmosphere atmosphere, vec3 rayleigh, vec3 mie, vec3 dir) {
   float nu = dot(dir, u_sun_dir);
-  return rayleigh * rayleigh_phase(nu) + mie * cornette_shanks_phase(atmosphere.mie_g, nu);
+  return rayleigh * rayleigh_phase(nu) + mie * mie_phase(atmosphere, nu);
 }
 
 uniform float u_exposure;

@@ -54,7 +54,7 @@ void main() {
     float segment = max(t_end - t_start, 0.0);
     float nu = dot(dir, u_sun_dir);
     float phase_r = rayleigh_phase(nu);
-    float phase_m = cornette_shanks_phase(atmosphere.mie_g, nu);
+    float phase_m = mie_phase(atmosphere, nu);
     // From inside the atmosphere samples crowd near the camera (s = u^2),
     // where the air is densest; from outside they are spread evenly.
     bool inside = t_top_near <= 0.0;
