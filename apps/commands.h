@@ -22,6 +22,11 @@ void add_fly_command(CLI::App& app);
 // `planet techniques`: the registry of atmosphere techniques.
 void add_techniques_command(CLI::App& app);
 void add_lab_command(CLI::App& app);
+// `planet lab measured`, added to the lab parent by add_lab_command.
+void add_lab_measured_command(CLI::App& lab);
+// The python3 that imports matplotlib, for a command's charts; InputError
+// naming `what` (the command) where there is none. Said before any work.
+std::string matplotlib_python(const std::string& what);
 void add_probe_sun_command(CLI::App& probe);
 // `planet probe ground`: the terrain's height under a place.
 void add_probe_ground_command(CLI::App& probe);

@@ -41,18 +41,9 @@ struct LabArgs {
 
 std::filesystem::path report_script() { return project_root() / "scripts" / "lab_report.py"; }
 
-// The python that draws the charts: the first of the PATH's python3 and
-// the system's (a python of one's own on the PATH may not see Debian's
-// python3-matplotlib) that imports matplotlib. Said before any work.
 std::string report_python() {
   check_readable_file(report_script());
-  for (const char* python : {"python3", "/usr/bin/python3"}) {
-    std::string probe = fmt::format("{} -c 'import matplotlib' > /dev/null 2>&1", python);
-    if (std::system(probe.c_str()) == 0) return python;
-  }
-  throw InputError(
-      "lab run: the charts need python3 with matplotlib (Debian's python3-matplotlib; "
-      "scripts/install-deps.sh installs it), or --no-report for the tables alone");
+  return matplotlib_python("lab run");
 }
 
 // The scenes' references and their first orders, rendered first where
@@ -297,6 +288,19 @@ void run_governor_command(GovernorArgs& args) {
 
 }  // namespace
 
+std::string matplotlib_python(const std::string& what) {
+  // The first of the PATH's python3 and the system's (a python of one's own
+  // on the PATH may not see Debian's python3-matplotlib) that imports it.
+  for (const char* python : {"python3", "/usr/bin/python3"}) {
+    std::string probe = fmt::format("{} -c 'import matplotlib' > /dev/null 2>&1", python);
+    if (std::system(probe.c_str()) == 0) return python;
+  }
+  throw InputError(fmt::format(
+      "{}: the charts need python3 with matplotlib (Debian's python3-matplotlib; "
+      "scripts/install-deps.sh installs it), or --no-report for the tables alone",
+      what));
+}
+
 void add_lab_command(CLI::App& app) {
   CLI::App* lab = app.add_subcommand("lab", "The lab: speed charted against accuracy");
   lab->require_subcommand(1);
@@ -399,6 +403,8 @@ void add_lab_command(CLI::App& app) {
   governor->add_flag("--redo", gv->options.redo, "Check views already checked again");
   governor->add_flag("--quiet", gv->quiet, "No progress lines");
   governor->callback([gv] { run_governor_command(*gv); });
+
+  add_lab_measured_command(*lab);
 }
 
 }  // namespace planet::apps

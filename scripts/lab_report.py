@@ -12,7 +12,8 @@ table of cells, and the technique / ground truth / error images of every
 point on a front; and OUT/orders.{png,svg}: each (technique, quality)'s
 error split into its first order and the orders above it. Where
 OUT/stability holds planet lab stability's report, the page links it and
-shows its line plots.
+shows its line plots; where OUT/measured holds planet lab measured's, the
+same.
 """
 import base64
 import html
@@ -237,6 +238,19 @@ def main():
             lines = os.path.join(stability, f"lines_{body}.png")
             if os.path.exists(lines):
                 parts.append(f'<div class="chart">{inline_png(lines)}</div>')
+    measured = os.path.join(out, "measured")
+    if os.path.exists(os.path.join(measured, "report.html")):
+        parts.append("<h2>Against measured skies</h2><p>The ground truth and each technique "
+                     "against Kider et al.'s measurements of 2013-05-27 "
+                     "(<code>planet lab measured</code>, its own report in "
+                     "<a href=\"measured/report.html\">measured/report.html</a>, its tables in "
+                     "measured/measured.csv and .json): spectral RMSE per capture and in total "
+                     "beside Bruneton's 2016 evaluation of the same day, zenith luminance, and "
+                     "the sky's radiance over the hemisphere.</p>")
+        for chart in ("rmse.png", "measured_vs_modelled.png", "zenith_luminance.png"):
+            path = os.path.join(measured, chart)
+            if os.path.exists(path):
+                parts.append(f'<div class="chart">{inline_png(path)}</div>')
     for scene in scenes:
         here = [c for c in cells if c["scene"] == scene]
         parts.append(f"<h2>{e(scene)}</h2>")

@@ -16,6 +16,8 @@ while IFS= read -r line; do
   case "$line" in *" lab run"*) [[ "$line" == *"--scenes"* ]] || continue ;; esac
   # The stability map's whole sweep (or a shard of it) takes an hour or more; named cells run.
   case "$line" in *" lab stability"*) [[ "$line" == *"--cells"* ]] || continue ;; esac
+  # The measured day in full takes some 25 minutes; a few directions of one capture run.
+  case "$line" in *" lab measured"*) [[ "$line" == *"--directions"* ]] || continue ;; esac
   if echo "$line" | grep -qE '\[|\b(FILE|DIR|NAME|DEG|UTC|MIB|PX|M)\b'; then continue; fi
   command="${line//build\/planet/$planet}"
   command="${command//PLANET_CACHE_DIR=data/PLANET_CACHE_DIR=$source/data}"

@@ -32,7 +32,7 @@ TEST(SharedMathGLTest, GpuFloatAgreesWithCpuDouble) {
   Buffer in = make_buffer(inputs.size() * sizeof(glm::vec4), inputs.data());
   Buffer out = make_buffer(inputs.size() * 4 * sizeof(glm::vec4), nullptr);
   program.use();
-  glUniform4f(program.uniform("u_shell"), float(bottom), float(top), float(g), 0.0f);
+  glUniform4f(program.uniform("u_shell"), float(bottom), float(top), float(g), 1.0f);
   glUniform1i(program.uniform("u_count"), GLint(inputs.size()));
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, in.id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, out.id());
@@ -46,6 +46,7 @@ TEST(SharedMathGLTest, GpuFloatAgreesWithCpuDouble) {
   a.bottom_radius = bottom;
   a.top_radius = top;
   a.mie_g = g;
+  a.mie_phase_hg = 1.0;  // the model's Mie phase: Henyey-Greenstein
   // Tolerances. A float carries 24 bits (6e-8 relative): radii near 6.4e6 m
   // hold 0.5 m steps. Distances from the boundary formulas subtract squares
   // of radii, and a ray-sphere hit at distance q from the point of closest
@@ -82,6 +83,8 @@ TEST(SharedMathGLTest, GpuFloatAgreesWithCpuDouble) {
     EXPECT_TRUE(close(shared::henyey_greenstein_phase(g, nu), o[1].y, 1e-5, 0.0)) << where;
     EXPECT_TRUE(close(shared::cornette_shanks_phase(g, nu), o[1].z, 1e-5, 0.0)) << where;
     EXPECT_TRUE(close(shared::isotropic_phase(), o[1].w, 1e-6, 0.0));
+    EXPECT_TRUE(close(shared::mie_phase(a, nu), o[3].w, 1e-5, 0.0)) << where;
+    EXPECT_TRUE(close(shared::henyey_greenstein_phase(g, nu), o[3].w, 1e-5, 0.0)) << where;
     double t0, t1;
     glm::dvec3 origin(0, 0, r), d(std::sqrt(std::max(1.0 - mu * mu, 0.0)), 0, mu);
     bool hit = shared::ray_shell(origin, d, bottom, top, t0, t1);

@@ -6,7 +6,7 @@
 layout(local_size_x = 64) in;
 layout(std430, binding = 0) readonly buffer Inputs { vec4 inputs[]; };
 layout(std430, binding = 1) writeonly buffer Outputs { vec4 outputs[]; };
-uniform vec4 u_shell;  // bottom radius, top radius, Mie g, -
+uniform vec4 u_shell;  // bottom radius, top radius, Mie g, Henyey-Greenstein (1) or not (0)
 uniform int u_count;
 
 void main() {
@@ -16,6 +16,7 @@ void main() {
   a.bottom_radius = u_shell.x;
   a.top_radius = u_shell.y;
   a.mie_g = u_shell.z;
+  a.mie_phase_hg = u_shell.w;
   float r = inputs[i].x, mu = inputs[i].y, H = inputs[i].z, nu = inputs[i].w;
   outputs[4 * i + 0] = vec4(distance_to_top_boundary(a, r, mu),
                             distance_to_bottom_boundary(a, r, mu),
@@ -31,5 +32,5 @@ void main() {
   vec3 o = vec3(0.0, 0.0, r);
   vec3 d = vec3(sqrt(max(1.0 - mu * mu, 0.0)), 0.0, mu);
   bool hit = ray_shell(o, d, a.bottom_radius, a.top_radius, t0, t1);
-  outputs[4 * i + 3] = vec4(hit ? 1.0 : 0.0, t0, t1, 0.0);
+  outputs[4 * i + 3] = vec4(hit ? 1.0 : 0.0, t0, t1, mie_phase(a, nu));
 }
