@@ -247,8 +247,8 @@ def main():
                      "measured/measured.csv and .json): spectral RMSE per capture and in total "
                      "beside Bruneton's 2016 evaluation of the same day, zenith luminance, and "
                      "the sky's radiance over the hemisphere.</p>")
-        for chart in ("rmse.png", "measured_vs_modelled.png", "zenith_luminance.png"):
-            path = os.path.join(measured, chart)
+        for plot in ("rmse.png", "measured_vs_modelled.png", "zenith_luminance.png"):
+            path = os.path.join(measured, plot)
             if os.path.exists(path):
                 parts.append(f'<div class="chart">{inline_png(path)}</div>')
     for scene in scenes:
