@@ -45,6 +45,7 @@ void run_measured_command(MeasuredArgs& args) {
   }
   OutputFolder folder(o.out, "--out");
   auto context = GlContext::create_headless();
+  folder.keep();  // the ground truth's cache goes in it from the first capture on
   InterruptScope interrupt;
   std::optional<Progress> progress;
   std::string stage;
@@ -56,19 +57,20 @@ void run_measured_command(MeasuredArgs& args) {
       stage = label;
     }
     progress->update(done);
-    if (interrupt.interrupted() && label == "ground truth" &&
-        done % int(plan.captures.front().directions.size()) == 0) {
+    if (interrupt.interrupted()) {
+      // The ground truth's finished captures are on disk, each whole; the
+      // workers of the one in progress are left to the exit, which skips
+      // the destructors that would wait for them.
       progress->finish();
-      folder.keep();
       std::fprintf(stderr,
-                   "planet: interrupted: the ground truth of the finished captures is kept in "
-                   "%s; run the same command again to go on\n",
+                   "planet: interrupted: the ground truth of every finished capture is kept in "
+                   "%s; run the same command again to go on from there\n",
                    (o.out / "ground_truth").string().c_str());
-      std::exit(kInterruptedExitStatus);
+      std::fflush(stdout);
+      std::_Exit(kInterruptedExitStatus);
     }
   });
   if (progress) progress->finish();
-  folder.keep();
   std::printf("%s", measured_summary(o, plan, rows).c_str());
   std::printf("wrote %s and %s\n", (o.out / "measured.json").string().c_str(),
               (o.out / "measured.csv").string().c_str());
