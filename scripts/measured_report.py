@@ -12,6 +12,8 @@ Writes
       and 650 nm, measured and from each source, with the sun's place;
   OUT/zenith_spectrum.png: the zenith's measured spectrum (every nm) and
       each source's, for each capture;
+  OUT/spectra_<HHMM>.png per capture: every direction's spectrum over the
+      compared range, measured and from each source, a panel a direction;
   OUT/rmse.png: each source's total spectral RMSE beside the published
       figures of Bruneton's 2016 evaluation of the same day;
   OUT/zenith_luminance.png: zenith luminance through the morning;
@@ -169,6 +171,41 @@ def zenith_spectra(doc, out):
     return save(fig, out, "zenith_spectrum.png")
 
 
+def direction_spectra(doc, out, capture):
+    """Every direction's spectrum, measured and from each source: a panel
+    per direction, by ring (elevation) and then azimuth."""
+    order = sorted(range(len(capture["directions"])),
+                   key=lambda i: (capture["directions"][i]["elevation_deg"],
+                                  capture["directions"][i]["azimuth_deg"]))
+    cols = math.ceil(math.sqrt(len(order)))
+    rows = math.ceil(len(order) / cols)
+    fig, axes = plt.subplots(rows, cols, figsize=(1.9 * cols, 1.5 * rows), squeeze=False,
+                             sharex=True)
+    w = doc["wavelengths_nm"]
+    keep = [k for k, l in enumerate(w) if doc["compare_nm"][0] <= l <= doc["compare_nm"][1]]
+    xs = [w[k] for k in keep]
+    for n, i in enumerate(order):
+        ax = axes[n // cols][n % cols]
+        d = capture["directions"][i]
+        ax.plot(xs, [1e3 * capture["measured"][i][k] for k in keep], "k-", lw=1.6,
+                label="measured")
+        for name in sources(doc):
+            ax.plot(xs, [1e3 * capture["sources"][name]["radiance"][i][k] for k in keep], lw=0.8,
+                    label=name)
+        ax.set_title(f"el {d['elevation_deg']:.0f} az {d['azimuth_deg']:.0f}", fontsize=6, pad=2)
+        ax.tick_params(labelsize=5, pad=1)
+        ax.set_ylim(bottom=0)
+    for n in range(len(order), rows * cols):
+        axes[n // cols][n % cols].axis("off")
+    axes[0][0].legend(fontsize=4, loc="upper right")
+    fig.suptitle(f"Spectral radiance per direction at {capture['local']} local "
+                 "(mW m⁻² sr⁻¹ nm⁻¹ against nm); sun at elevation "
+                 f"{capture['sun']['elevation_deg']:.1f}, azimuth {capture['sun']['azimuth_deg']:.1f}",
+                 fontsize=9)
+    fig.tight_layout(rect=(0, 0, 1, 0.97))
+    return save(fig, out, f"spectra_{capture['local'].replace(':', '')}.png")
+
+
 def rmse_chart(doc, out):
     names = sources(doc)
     values = [doc["totals"][n]["debiased_rmse"] for n in names]
@@ -222,6 +259,7 @@ def main():
     plots = [scatter_plot(doc, out), rmse_chart(doc, out), luminance_chart(doc, out),
              zenith_spectra(doc, out)]
     maps = [radiance_maps(doc, out, c) for c in doc["captures"]]
+    spectra = [direction_spectra(doc, out, c) for c in doc["captures"]]
     names = sources(doc)
     caps = doc["captures"]
     rows = []
@@ -262,6 +300,7 @@ the measured sky is mirror-symmetric, and the turn given to the scan's azimuths.
 <table><tr><th>local</th><th>UTC</th><th>elevation</th><th>azimuth</th><th>sky's axis</th>
 <th>turn</th></tr>{suns}</table>
 <h2>Radiance over the sky</h2>{''.join(inline_png(m) for m in maps)}
+<h2>Spectra, direction by direction</h2>{''.join(inline_png(m) for m in spectra)}
 </body></html>"""
     with open(os.path.join(out, "report.html"), "w", encoding="utf-8") as f:
         f.write(page)
