@@ -165,17 +165,23 @@ std::vector<double> spectrum_every_nm(const std::vector<double>& samples,
 }
 
 MeasuredScore score_against(const MeasuredCapture& capture, const SkySpectra& spectra,
-                            const std::vector<double>& wavelengths_nm) {
+                            const std::vector<double>& wavelengths_nm, double sun_elevation_deg,
+                            double sun_azimuth_deg) {
   MeasuredScore s;
-  double squares = 0, noise = 0, measured = 0;
-  int count = 0;
+  double squares = 0, noise = 0, measured = 0, away = 0;
+  int count = 0, away_count = 0;
+  glm::dvec3 sun = enu(sun_azimuth_deg, sun_elevation_deg);
+  double cos_aureole = std::cos(glm::radians(kAureoleDeg));
   for (size_t i = 0; i < capture.directions.size(); ++i) {
+    const MeasuredDirection& dir = capture.directions[i];
+    bool near_sun = glm::dot(enu(dir.azimuth_deg, dir.elevation_deg), sun) > cos_aureole;
     for (size_t k = 0; k < wavelengths_nm.size(); ++k) {
       double l = wavelengths_nm[k];
       if (l < kCompareFirstNm || l > kCompareLastNm) continue;
       double m = capture.band_radiance(capture.directions[i], l);
       double d = spectra.radiance[i][k] - m;
       squares += d * d;
+      if (!near_sun) away += d * d, ++away_count;
       if (!spectra.std_error.empty()) noise += spectra.std_error[i][k] * spectra.std_error[i][k];
       measured += m;
       ++count;
@@ -184,6 +190,10 @@ MeasuredScore score_against(const MeasuredCapture& capture, const SkySpectra& sp
   s.rmse = 1e3 * std::sqrt(squares / count);
   s.debiased_rmse = 1e3 * std::sqrt(std::max(squares - noise, 0.0) / count);
   s.mean_measured = 1e3 * measured / count;
+  s.samples = count;
+  s.away_samples = away_count;
+  s.rmse_away_from_sun = away_count ? 1e3 * std::sqrt(away / away_count) : 0.0;
+  s.near_sun_share = squares > 0.0 ? 1.0 - away / squares : 0.0;
   s.zenith_luminance =
       luminance_cd_m2(spectrum_every_nm(spectra.radiance.back(), wavelengths_nm), 360);
   s.measured_zenith_luminance = luminance_cd_m2(capture.zenith().radiance, capture.first_nm);

@@ -37,7 +37,16 @@ struct MeasuredScore {
   double debiased_rmse = 0;  // the ground truth's noise taken out (= rmse for a technique)
   double zenith_luminance = 0, measured_zenith_luminance = 0;  // cd/m^2
   double mean_measured = 0;  // the measurement's mean over the same samples, mW m^-2 sr^-1 nm^-1
+  // The same RMSE (noise included) over the directions at least
+  // kAureoleDeg from the sun, and the share of the squared error that the
+  // directions nearer it carry: where a phase function's forward peak
+  // shows.
+  double rmse_away_from_sun = 0, near_sun_share = 0;
+  int samples = 0, away_samples = 0;  // what each RMSE averages over
 };
+
+// The aureole's radius for MeasuredScore, degrees.
+constexpr double kAureoleDeg = 10.0;
 
 // A capture as the frame and the ground truth see it: the scene of the
 // camera 2 m above the site, looking up, with the sun where our ephemeris
@@ -73,8 +82,11 @@ SkySpectra cached_ground_truth_spectra(const AtmosphereModel& model, const Measu
                                        const std::filesystem::path& cache_dir,
                                        const std::function<void(int)>& on_progress = {});
 
+// `sun_elevation_deg` and `sun_azimuth_deg` place the sun among the
+// capture's directions.
 MeasuredScore score_against(const MeasuredCapture& capture, const SkySpectra& spectra,
-                            const std::vector<double>& wavelengths_nm);
+                            const std::vector<double>& wavelengths_nm, double sun_elevation_deg,
+                            double sun_azimuth_deg);
 
 // A spectrum at the model's samples, linearly interpolated to every nm
 // over 360-830 (held beyond its ends), for luminance_cd_m2.

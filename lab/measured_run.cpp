@@ -49,6 +49,23 @@ double total_rmse(const std::vector<MeasuredRow>& rows, const std::string& sourc
   return n ? std::sqrt(sum / n) : 0.0;
 }
 
+// The same over the directions away from the sun, pooled over the captures
+// (they hold different numbers of such directions), and the share of the
+// squared error within the aureole.
+double total_away_rmse(const std::vector<MeasuredRow>& rows, const std::string& source,
+                       double* near_sun_share) {
+  double away = 0, all = 0;
+  int n = 0;
+  for (const MeasuredRow& r : rows) {
+    if (r.source != source) continue;
+    away += r.score.rmse_away_from_sun * r.score.rmse_away_from_sun * r.score.away_samples;
+    all += r.score.rmse * r.score.rmse * r.score.samples;
+    n += r.score.away_samples;
+  }
+  *near_sun_share = all > 0.0 ? 1.0 - away / all : 0.0;
+  return n ? std::sqrt(away / n) : 0.0;
+}
+
 }  // namespace
 
 std::vector<PublishedRmse> published_rmse() {
@@ -136,7 +153,8 @@ std::vector<MeasuredRow> run_measured(const MeasuredOptions& o, const MeasuredPl
           if (on_progress) on_progress("ground truth", int(c) * directions + done, total);
         }));
     rows.push_back({"ground_truth", plan.captures[c].local,
-                    score_against(plan.captures[c], truth.back(), wavelengths)});
+                    score_against(plan.captures[c], truth.back(), wavelengths,
+                                  plan.views[c].sun_elevation_deg, plan.views[c].sun_azimuth_deg)});
   }
 
   std::map<std::string, std::vector<SkySpectra>> by_technique;
@@ -146,7 +164,9 @@ std::vector<MeasuredRow> run_measured(const MeasuredOptions& o, const MeasuredPl
     });
     for (size_t c = 0; c < plan.captures.size(); ++c) {
       rows.push_back({t, plan.captures[c].local,
-                      score_against(plan.captures[c], by_technique[t][c], wavelengths)});
+                      score_against(plan.captures[c], by_technique[t][c], wavelengths,
+                                    plan.views[c].sun_elevation_deg,
+                                    plan.views[c].sun_azimuth_deg)});
     }
   }
 
@@ -155,7 +175,9 @@ std::vector<MeasuredRow> run_measured(const MeasuredOptions& o, const MeasuredPl
                           {"debiased_rmse", s.debiased_rmse},
                           {"zenith_luminance", s.zenith_luminance},
                           {"measured_zenith_luminance", s.measured_zenith_luminance},
-                          {"mean_measured", s.mean_measured}};
+                          {"mean_measured", s.mean_measured},
+                          {"rmse_away_from_sun", s.rmse_away_from_sun},
+                          {"near_sun_share", s.near_sun_share}};
   };
   for (size_t c = 0; c < plan.captures.size(); ++c) {
     const MeasuredCapture& cap = plan.captures[c];
@@ -191,7 +213,12 @@ std::vector<MeasuredRow> run_measured(const MeasuredOptions& o, const MeasuredPl
   std::vector<std::string> sources = {"ground_truth"};
   sources.insert(sources.end(), plan.techniques.begin(), plan.techniques.end());
   for (const std::string& s : sources) {
-    totals[s] = {{"rmse", total_rmse(rows, s, false)}, {"debiased_rmse", total_rmse(rows, s, true)}};
+    double share = 0;
+    double away = total_away_rmse(rows, s, &share);
+    totals[s] = {{"rmse", total_rmse(rows, s, false)},
+                 {"debiased_rmse", total_rmse(rows, s, true)},
+                 {"rmse_away_from_sun", away},
+                 {"near_sun_share", share}};
   }
   nlohmann::json published = nlohmann::json::array();
   for (const PublishedRmse& p : published_rmse()) {
@@ -210,11 +237,13 @@ std::vector<MeasuredRow> run_measured(const MeasuredOptions& o, const MeasuredPl
   write_file_atomically(o.out / "measured.json", doc.dump(1));
 
   std::string csv =
-      "source,capture,rmse,debiased_rmse,zenith_luminance,measured_zenith_luminance\n";
+      "source,capture,rmse,debiased_rmse,zenith_luminance,measured_zenith_luminance,"
+      "rmse_away_from_sun,near_sun_share\n";
   for (const MeasuredRow& r : rows) {
-    csv += fmt::format("{},{},{:.3f},{:.3f},{:.1f},{:.1f}\n", r.source, r.capture, r.score.rmse,
-                       r.score.debiased_rmse, r.score.zenith_luminance,
-                       r.score.measured_zenith_luminance);
+    csv += fmt::format("{},{},{:.3f},{:.3f},{:.1f},{:.1f},{:.3f},{:.3f}\n", r.source, r.capture,
+                       r.score.rmse, r.score.debiased_rmse, r.score.zenith_luminance,
+                       r.score.measured_zenith_luminance, r.score.rmse_away_from_sun,
+                       r.score.near_sun_share);
   }
   write_file_atomically(o.out / "measured.csv", csv);
   return rows;
@@ -242,6 +271,15 @@ std::string measured_summary(const MeasuredOptions& o, const MeasuredPlan& plan,
     }
     out += fmt::format("{:>9.1f}\n", total_rmse(rows, s, true));
   }
+  out += fmt::format("In total, beyond {:g} deg of the sun (and the share of the squared error "
+                     "within it):",
+                     kAureoleDeg);
+  for (const std::string& s : sources) {
+    double share = 0;
+    double away = total_away_rmse(rows, s, &share);
+    out += fmt::format(" {} {:.1f} ({:.0f} %);", s, away, 100.0 * share);
+  }
+  out += "\n";
   out += "Published on the same day (Bruneton 2016, total):";
   for (const PublishedRmse& p : published_rmse()) out += fmt::format(" {} {};", p.model, p.rmse);
   out += fmt::format("\nSun: our ephemeris against the sky's axis of symmetry (azimuth, deg; the "

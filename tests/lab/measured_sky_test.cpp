@@ -2,6 +2,7 @@
 // against values read by hand from their files, the unit conversions, and
 // one failing case per rule of the layout.
 #include "lab/measured_sky.h"
+#include "lab/measured_comparison.h"
 #include "core/data_paths.h"
 #include "core/error.h"
 
@@ -71,6 +72,26 @@ TEST(MeasuredSkyTest, TheSkysAxisOfSymmetryIsFoundNearTheSun) {
     for (double& v : d.radiance) v = 1.0 + off + 0.01 * d.elevation_deg;
   }
   EXPECT_NEAR(symmetry_azimuth_deg(c, 110.0), 100.0, 0.11);
+}
+
+TEST(MeasuredSkyTest, ScoresSplitTheAureoleFromTheRestOfTheSky) {
+  // Two directions of a flat measured sky, 0.1 W m^-2 sr^-1 nm^-1: one 5 deg
+  // from the sun (modelled 0.13: 30 mW off), one far from it (0.11: 10 mW
+  // off), at 360 and 370 nm.
+  MeasuredCapture c;
+  c.first_nm = 350;
+  c.last_nm = 830;
+  std::vector<double> flat(481, 0.1);
+  c.directions = {{0, 100.0, 45.0, flat}, {1, 280.0, 30.0, flat}};
+  SkySpectra model;
+  model.radiance = {{0.13, 0.13}, {0.11, 0.11}};
+  MeasuredScore s = score_against(c, model, {360.0, 370.0}, 50.0, 100.0);
+  EXPECT_NEAR(s.rmse, std::sqrt((30.0 * 30.0 + 10.0 * 10.0) / 2.0), 1e-9);
+  EXPECT_NEAR(s.rmse_away_from_sun, 10.0, 1e-9);
+  EXPECT_NEAR(s.near_sun_share, 900.0 / 1000.0, 1e-12);
+  EXPECT_EQ(s.samples, 4);
+  EXPECT_EQ(s.away_samples, 2);
+  EXPECT_NEAR(s.mean_measured, 100.0, 1e-9);
 }
 
 // A copy of the first capture, changed by `edit`, loaded: the message.
