@@ -46,13 +46,18 @@ OutputFolder::OutputFolder(std::filesystem::path dir, std::string what) : dir_(s
     if (p == p.parent_path()) break;
   }
   for (const auto& p : missing) {
-    if (!std::filesystem::create_directory(p, ec) || ec) {
+    // Another process may make the same folder meanwhile (the tasks of a
+    // cluster's job array write into one): a folder that is there is
+    // fine, and is not ours to remove.
+    bool made = std::filesystem::create_directory(p, ec);
+    std::error_code exists_ec;
+    if (ec || (!made && !std::filesystem::is_directory(p, exists_ec))) {
       std::string reason = ec ? ec.message() : "it could not be made";
       for (auto it = made_.rbegin(); it != made_.rend(); ++it) std::filesystem::remove(*it, ec);
       made_.clear();
       fail(fmt::format("cannot create the folder: {}", reason));
     }
-    made_.push_back(p);
+    if (made) made_.push_back(p);
   }
   auto probe = dir_ / ".planet-write-test";
   {
