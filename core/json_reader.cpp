@@ -8,21 +8,10 @@
 #include <cmath>
 #include <fstream>
 #include <memory>
-#include <mutex>
 
 namespace planet {
 
 namespace {
-
-// The parsed documents must outlive the JsonObjects that point into them.
-// Files are small and few, so they are simply kept for the process's life.
-const nlohmann::json& keep(nlohmann::json document) {
-  static std::mutex mutex;
-  static std::vector<std::unique_ptr<nlohmann::json>> documents;
-  std::lock_guard lock(mutex);
-  documents.push_back(std::make_unique<nlohmann::json>(std::move(document)));
-  return *documents.back();
-}
 
 std::string format_number(double v) { return fmt::format("{:g}", v); }
 
@@ -35,7 +24,9 @@ JsonObject JsonObject::load(const std::filesystem::path& file) {
   nlohmann::json document;
   try {
     document = nlohmann::json::parse(in, nullptr, true, /*ignore_comments=*/false);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {
+    // A syntax error (parse_error), or a number beyond a double's range
+    // (out_of_range 406, "number overflow parsing '-2e308'").
     // nlohmann's message starts with "[json.exception.parse_error.101] parse error at line 3, ..."
     std::string what = e.what();
     auto bracket = what.find("] ");
@@ -45,11 +36,17 @@ JsonObject JsonObject::load(const std::filesystem::path& file) {
   if (!document.is_object()) {
     throw InputError(fmt::format("{}: the top level must be a JSON object", file.string()));
   }
-  return JsonObject(keep(std::move(document)), file.string(), "");
+  auto kept = std::make_shared<const nlohmann::json>(std::move(document));
+  return JsonObject(kept, *kept, file.string(), "");
 }
 
 JsonObject::JsonObject(const nlohmann::json& value, std::string file, std::string path)
-    : value_(&value), file_(std::move(file)), path_(std::move(path)) {
+    : JsonObject(nullptr, value, std::move(file), std::move(path)) {}
+
+JsonObject::JsonObject(std::shared_ptr<const nlohmann::json> document, const nlohmann::json& value,
+                       std::string file, std::string path)
+    : document_(std::move(document)), value_(&value), file_(std::move(file)),
+      path_(std::move(path)) {
   if (!value_->is_object()) fail("must be a JSON object");
 }
 
@@ -156,7 +153,7 @@ std::vector<double> JsonObject::number_list(const std::string& key, double min, 
 JsonObject JsonObject::object(const std::string& key) {
   const auto& v = require(key);
   if (!v.is_object()) fail(key, "must be a JSON object");
-  return JsonObject(v, file_, where(key));
+  return JsonObject(document_, v, file_, where(key));
 }
 
 std::vector<JsonObject> JsonObject::objects(const std::string& key) {
@@ -165,7 +162,7 @@ std::vector<JsonObject> JsonObject::objects(const std::string& key) {
   std::vector<JsonObject> out;
   for (size_t i = 0; i < v.size(); ++i) {
     if (!v[i].is_object()) fail(fmt::format("{}[{}]", key, i), "must be a JSON object");
-    out.emplace_back(v[i], file_, fmt::format("{}[{}]", where(key), i));
+    out.push_back(JsonObject(document_, v[i], file_, fmt::format("{}[{}]", where(key), i)));
   }
   return out;
 }

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <regex>
 #include <sstream>
@@ -19,7 +20,10 @@ namespace {
 constexpr int kSamples = 81;
 constexpr int kNeedFirstNm = 360, kNeedLastNm = 830;
 
-MeasuredDirection load_direction(const std::filesystem::path& file, int& first_nm, int& last_nm) {
+}  // namespace
+
+MeasuredDirection load_measured_direction(const std::filesystem::path& file, int& first_nm,
+                                          int& last_nm) {
   static const std::regex kName(
       R"(^(\d{4}-\d{2}-\d{2})___(\d{2})\.(\d{2})\.(\d{2})_-_(\d+)____([0-9.]+)___([0-9.]+)\.asd\.rad\.txt$)");
   std::smatch m;
@@ -31,14 +35,24 @@ MeasuredDirection load_direction(const std::filesystem::path& file, int& first_n
         file.string()));
   }
   MeasuredDirection d;
-  d.index = std::stoi(m[5]);
-  double azimuth_ccw = std::stod(m[6]);
-  d.elevation_deg = std::stod(m[7]);
-  if (d.index >= kSamples || azimuth_ccw > 360.0 || d.elevation_deg > 90.0) {
+  // The name's fields are digits (and dots), but may not be numbers ("1.2.3",
+  // ".") or may not fit: read without exceptions, as the lines are.
+  auto number = [](const std::string& text) {
+    std::istringstream in(text);
+    double v = std::numeric_limits<double>::quiet_NaN();
+    if (!(in >> v) || in.peek() != std::char_traits<char>::eof()) return std::nan("");
+    return v;
+  };
+  double index = number(m[5]);
+  double azimuth_ccw = number(m[6]);
+  d.elevation_deg = number(m[7]);
+  if (!(index >= 0 && index < kSamples) || !(azimuth_ccw >= 0 && azimuth_ccw <= 360.0) ||
+      !(d.elevation_deg >= 0 && d.elevation_deg <= 90.0)) {
     throw InputError(fmt::format("{}: index {} (0-80), azimuth {} (0-360) or elevation {} "
                                  "(0-90) out of range",
-                                 file.string(), d.index, azimuth_ccw, d.elevation_deg));
+                                 file.string(), m[5].str(), m[6].str(), m[7].str()));
   }
+  d.index = int(index);
   d.azimuth_deg = std::fmod(360.0 - azimuth_ccw, 360.0);
 
   std::ifstream in(file);
@@ -61,6 +75,10 @@ MeasuredDirection load_direction(const std::filesystem::path& file, int& first_n
       throw InputError(fmt::format("{}:{}: expected \"<wavelength nm> <radiance>\", got \"{}\"",
                                    file.string(), line_number, line));
     }
+    if (nm < 0 || nm > 100000) {
+      throw InputError(fmt::format("{}:{}: wavelength {} nm is not one of a spectrometer",
+                                   file.string(), line_number, nm));
+    }
     if (expected_nm >= 0 && nm != expected_nm) {
       throw InputError(fmt::format("{}:{}: wavelength {} nm where {} nm was expected (1 nm steps)",
                                    file.string(), line_number, nm, expected_nm));
@@ -77,6 +95,8 @@ MeasuredDirection load_direction(const std::filesystem::path& file, int& first_n
   }
   return d;
 }
+
+namespace {
 
 // The ring of samples at one elevation, in azimuth order.
 std::map<double, std::vector<const MeasuredDirection*>> rings(const MeasuredCapture& c) {
@@ -136,7 +156,7 @@ MeasuredCapture load_measured_capture(const std::filesystem::path& dir, const Me
   std::vector<bool> seen(kSamples, false);
   for (const auto& file : files) {
     int first = 0, last = 0;
-    MeasuredDirection d = load_direction(file, first, last);
+    MeasuredDirection d = load_measured_direction(file, first, last);
     if (seen[size_t(d.index)]) {
       throw InputError(fmt::format("{}: sample {} appears twice", dir.string(), d.index));
     }

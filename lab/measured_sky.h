@@ -49,6 +49,12 @@ struct MeasuredCapture {
   const MeasuredDirection& zenith() const { return directions.back(); }
 };
 
+// One sample's file: its name gives the index, azimuth and elevation, its
+// lines the spectrum; `first_nm` and `last_nm` the wavelengths it covers.
+// InputError naming the file (and line) as below.
+MeasuredDirection load_measured_direction(const std::filesystem::path& file, int& first_nm,
+                                          int& last_nm);
+
 // One capture's folder. InputError naming the folder or the file (and its
 // line) for a missing or extra sample, a malformed name or line, a gap in
 // the wavelengths, or a spectrum that does not cover 360-830 nm.

@@ -434,6 +434,19 @@ StabilityResult result_from_json(const nlohmann::json& j, const std::string& fil
   }
 }
 
+StabilityResult read_stability_result(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  nlohmann::json j;
+  try {
+    in >> j;
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(fmt::format("{}: not a cell of planet lab stability ({}); delete it or run "
+                                 "with --redo",
+                                 file.string(), e.what()));
+  }
+  return result_from_json(j, file.string());
+}
+
 void write_stability_tables(const StabilityOptions& o, const std::vector<StabilityResult>& results) {
   nlohmann::json bodies = nlohmann::json::object();
   for (const std::string& body : stability_bodies()) {

@@ -146,5 +146,7 @@ void write_stability_tables(const StabilityOptions& options,
 
 nlohmann::json result_to_json(const StabilityResult& result);
 StabilityResult result_from_json(const nlohmann::json& json, const std::string& file);
+// A cell the map wrote; InputError naming the file for anything else.
+StabilityResult read_stability_result(const std::filesystem::path& file);
 
 }  // namespace planet

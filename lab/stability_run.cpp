@@ -45,17 +45,7 @@ namespace {
 
 std::optional<StabilityResult> read_result(const std::filesystem::path& file) {
   if (!std::filesystem::exists(file)) return std::nullopt;
-  std::ifstream in(file);
-  nlohmann::json j;
-  try {
-    in >> j;
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(fmt::format("{}: not a cell of planet lab stability ({}); delete it or run "
-                                 "with --redo",
-                                 file.string(), e.what()));
-  }
-  StabilityResult r = result_from_json(j, file.string());
-  return r;
+  return read_stability_result(file);
 }
 
 StabilityResult run_point(const StabilityCell& cell, const std::string& technique,

@@ -288,6 +288,19 @@ SweepCell cell_from_json(const nlohmann::json& j, const std::string& file) {
   }
 }
 
+SweepCell read_sweep_cell(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  nlohmann::json j;
+  try {
+    in >> j;
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(fmt::format("{}: not a cell of planet lab run ({}); delete it or run "
+                                 "with --redo",
+                                 file.string(), e.what()));
+  }
+  return cell_from_json(j, file.string());
+}
+
 std::vector<SweepCell> run_sweep(const SweepOptions& o, const SweepPlan& plan,
                                  const std::function<void(int, int, const std::string&)>& progress) {
   const int total = int(plan.scenes.size() * plan.points.size());
@@ -319,16 +332,7 @@ std::vector<SweepCell> run_sweep(const SweepOptions& o, const SweepPlan& plan,
       if (progress) progress(done, total, label);
       SweepCell cell;
       if (!o.redo && std::filesystem::exists(file)) {
-        std::ifstream in(file);
-        nlohmann::json j;
-        try {
-          in >> j;
-        } catch (const nlohmann::json::exception& e) {
-          throw InputError(fmt::format("{}: not a cell of planet lab run ({}); delete it or run "
-                                       "with --redo",
-                                       file.string(), e.what()));
-        }
-        cell = cell_from_json(j, file.string());
+        cell = read_sweep_cell(file);
         cell.kept = true;
       } else {
         cell.scene = scene.name;

@@ -79,5 +79,8 @@ std::vector<SweepCell> run_sweep(const SweepOptions& options, const SweepPlan& p
 nlohmann::json cell_to_json(const SweepCell& cell);
 // InputError naming `file` for a cell file this program did not write.
 SweepCell cell_from_json(const nlohmann::json& json, const std::string& file);
+// A cell a sweep wrote (cells/<scene>/<technique>-<quality>.json); InputError
+// naming the file for anything else.
+SweepCell read_sweep_cell(const std::filesystem::path& file);
 
 }  // namespace planet

@@ -12,7 +12,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
-#include <ranges>
 
 namespace planet {
 
@@ -249,13 +248,23 @@ std::string TechniqueChoice::text() const {
   return name + out;
 }
 
+// The first of each pair: the names of parameters or quality points, for
+// messages. (std::views::keys would do, but clang 14 cannot compile it
+// against GCC 12's library, and the sanitizer builds use clang.)
+template <class Pairs>
+std::vector<std::string> keys_of(const Pairs& pairs) {
+  std::vector<std::string> out;
+  for (const auto& pair : pairs) out.push_back(pair.first);
+  return out;
+}
+
 TechniqueChoice parse_technique(const std::string& text) {
   size_t colon = text.find(':');
   const TechniqueEntry& t = technique_entry(text.substr(0, colon));
   TechniqueChoice choice{t.name, {}};
   for (const auto& p : t.quality) choice.values.emplace_back(p.key, p.default_value);
   if (colon == std::string::npos) return choice;
-  auto point_names = t.quality_points | std::views::keys;
+  std::vector<std::string> point_names = keys_of(t.quality_points);
   // key=value items in turn; an item that names a quality point sets the
   // point's values, and the items after it may change them.
   auto apply = [&](const std::string& items, auto& self) -> void {
@@ -272,7 +281,7 @@ TechniqueChoice parse_technique(const std::string& text) {
       } else if (eq == std::string::npos || eq == 0) {
         throw InputError(fmt::format("{}: '{}' is not key=value nor a quality point (its keys: {}; "
                                      "its points: {})",
-                                     t.name, item, fmt::join(choice.values | std::views::keys, ", "),
+                                     t.name, item, fmt::join(keys_of(choice.values), ", "),
                                      fmt::join(point_names, ", ")));
       } else {
         std::string key = item.substr(0, eq);
@@ -280,7 +289,7 @@ TechniqueChoice parse_technique(const std::string& text) {
                                [&](const QualityParameter& p) { return p.key == key; });
         if (it == t.quality.end()) {
           throw InputError(fmt::format("{} has no quality parameter '{}' (its parameters: {})",
-                                       t.name, key, fmt::join(choice.values | std::views::keys, ", ")));
+                                       t.name, key, fmt::join(keys_of(choice.values), ", ")));
         }
         choice.values[size_t(it - t.quality.begin())].second =
             parse_value(t, *it, item.substr(eq + 1));

@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 
 namespace planet {
@@ -62,12 +64,28 @@ std::optional<RenderSums> read_sums(const std::filesystem::path& file,
   }
   sums.done.resize(lanes);
   for (int& n : sums.done) in >> n;
-  if (!in || in.get() != '\n') throw bad("its paths line does not give one count per lane");
-  sums.sum.resize(size_t(sums.width) * size_t(sums.height) * lanes);
+  if (!in || in.get() != '\n' ||
+      std::any_of(sums.done.begin(), sums.done.end(), [](int n) { return n < 0; })) {
+    throw bad("its paths line does not give one count (0 or more) per lane");
+  }
+  // The sums the header promises must be in the file before any memory is
+  // given to them: a header that claims a billion pixels is not sums.
+  const uint64_t count = uint64_t(sums.width) * uint64_t(sums.height) * lanes;
+  std::error_code ec;
+  const uint64_t file_bytes = std::filesystem::file_size(file, ec);
+  const auto header_bytes = uint64_t(in.tellg());
+  if (ec || count > (file_bytes - std::min(file_bytes, header_bytes)) / sizeof(double)) {
+    throw bad(fmt::format("its header promises {} x {} x {} sums, more than it holds",
+                          sums.width, sums.height, lanes));
+  }
+  sums.sum.resize(count);
   in.read(reinterpret_cast<char*>(sums.sum.data()),
           std::streamsize(sums.sum.size() * sizeof(double)));
   if (!in || in.peek() != std::char_traits<char>::eof()) {
     throw bad(fmt::format("it should hold {} sums after its header", sums.sum.size()));
+  }
+  if (!std::all_of(sums.sum.begin(), sums.sum.end(), [](double v) { return std::isfinite(v); })) {
+    throw bad("it holds a sum that is not a finite number");
   }
   return sums;
 }
