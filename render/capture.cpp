@@ -233,6 +233,8 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
   std::filesystem::create_directories(options.out_dir);
   const auto finished_marker = options.out_dir / "capture.json";
   std::filesystem::remove(finished_marker);
+  remove_stale_partials(options.out_dir);
+  StagingFolder staging(options.out_dir);
 
   FrameRenderer renderer(script.width, script.height);
   TerrainOptions terrain;
@@ -287,10 +289,20 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
                                   renderer.terrain_stats(),
                                   decision ? decision->choice : script.technique);
     if (decision) side["governor"] = decision->to_json(*budget);
-    write_exr(options.out_dir / (stem + ".exr"), script.width, script.height, renderer.read_hdr(),
-              frame_exr_extras(script, path, t, camera, side, renderer));
-    write_png(options.out_dir / (stem + ".png"), script.width, script.height, renderer.read_ldr());
-    write_file_atomically(options.out_dir / (stem + ".json"), side.dump(2) + "\n");
+    // The frame's files, each whole, are made in the staging folder and
+    // then moved into place together, the sidecar last: a capture killed at
+    // any moment leaves whole frames, and a frame without its sidecar is
+    // not one (resume from the first of those).
+    try {
+      write_exr(staging.path() / (stem + ".exr"), script.width, script.height,
+                renderer.read_hdr(), frame_exr_extras(script, path, t, camera, side, renderer));
+      write_png(staging.path() / (stem + ".png"), script.width, script.height,
+                renderer.read_ldr());
+      write_file_atomically(staging.path() / (stem + ".json"), side.dump(2) + "\n");
+    } catch (const SystemError& e) {
+      throw SystemError(staging.as_published(e.what()));
+    }
+    for (const char* extension : {".exr", ".png", ".json"}) staging.publish(stem + extension);
     if (frame == first) result.first_png = options.out_dir / (stem + ".png");
     result.last_png = options.out_dir / (stem + ".png");
     ++result.frames;

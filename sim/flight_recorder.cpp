@@ -1,5 +1,6 @@
 #include "sim/flight_recorder.h"
 
+#include "core/atomic_file.h"
 #include "core/error.h"
 
 #include <fmt/format.h>
@@ -43,9 +44,8 @@ nlohmann::json FlightRecorder::script() const {
 
 void FlightRecorder::write(const std::filesystem::path& file) const {
   if (frames_ == 0) throw InputError("nothing recorded");
-  std::ofstream out(file);
-  out << script().dump(2) << "\n";
-  if (!out) throw SystemError(fmt::format("{}: cannot write the recorded flight", file.string()));
+  // Whole or not at all: a full disk or a kill never leaves half a flight.
+  write_file_atomically(file, script().dump(2) + "\n");
 }
 
 }  // namespace planet
