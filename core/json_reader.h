@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <limits>
+#include <memory>
 #include <set>
 #include <string>
 #include <vector>
@@ -16,9 +17,11 @@ namespace planet {
 
 class JsonObject {
  public:
-  // Parses `file` and returns its top-level object.
+  // Parses `file` and returns its top-level object, which (with every
+  // object taken from it) holds the parsed document.
   static JsonObject load(const std::filesystem::path& file);
 
+  // An object within a document the caller keeps alive.
   JsonObject(const nlohmann::json& value, std::string file, std::string path);
 
   bool has(const std::string& key) const;
@@ -60,6 +63,10 @@ class JsonObject {
   const nlohmann::json& require(const std::string& key);
   std::string where(const std::string& key) const;
 
+  JsonObject(std::shared_ptr<const nlohmann::json> document, const nlohmann::json& value,
+             std::string file, std::string path);
+
+  std::shared_ptr<const nlohmann::json> document_;  // null where the caller keeps it
   const nlohmann::json* value_;
   std::string file_;
   std::string path_;
