@@ -23,6 +23,9 @@ packages=(
   xvfb xauth xdotool
   # the cluster test runs a one-node Slurm (scripts/slurm-one-node.sh)
   slurm-wlm munge
+  # the hardening builds (scripts/hardening.sh): clang with its sanitizer and
+  # libFuzzer runtimes
+  clang libclang-rt-14-dev
   # the lab's charts (scripts/lab_report.py), and the browser its test opens the report in
   python3-matplotlib chromium
 )
