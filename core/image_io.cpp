@@ -6,6 +6,9 @@
 #include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <fstream>
+
 namespace planet {
 
 namespace {
@@ -88,7 +91,22 @@ void write_png(const std::filesystem::path& file, int width, int height,
   write_png_rgb8(file, width, height, rgb_rows_from_gl(width, height, rgba));
 }
 
+void check_image_signature(const std::filesystem::path& file, const std::string& what) {
+  std::ifstream in(file, std::ios::binary);
+  char b[4] = {0, 0, 0, 0};
+  in.read(b, 4);
+  auto is = [&](const char* magic, size_t n) { return in.gcount() >= std::streamsize(n) && std::equal(b, b + n, magic); };
+  bool known = is("\x89PNG", 4) || is("II*\0", 4) || is("MM\0*", 4) || is("v/1\x01", 4) ||
+               (in.gcount() >= 2 && b[0] == 'P' && b[1] >= '1' && b[1] <= '6');
+  if (!known) {
+    throw InputError(fmt::format("{}: not a PNG, TIFF, OpenEXR or PNM image (by its first bytes); "
+                                 "{} reads only those",
+                                 file.string(), what));
+  }
+}
+
 ImageRGB read_image_rgb(const std::filesystem::path& file) {
+  check_image_signature(file, "an image of the program's");
   auto in = OIIO::ImageInput::open(file.string());
   if (!in)
     throw InputError(fmt::format("{}: cannot read image: {}", file.string(), OIIO::geterror()));

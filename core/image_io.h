@@ -68,6 +68,13 @@ void write_png_rgb8(const std::filesystem::path& file, int width, int height,
 void write_png(const std::filesystem::path& file, int width, int height,
                const std::vector<uint8_t>& rgba);
 
+// Refuses (InputError naming the file and `what` reads it) a file whose
+// first bytes are not those of a PNG, TIFF, OpenEXR or PNM image, before
+// OpenImageIO sees it: its readers of other formats are not all safe on
+// malformed files (2.4's JPEG reader overflows a buffer on a bad IPTC
+// block; found by the height_map fuzz target).
+void check_image_signature(const std::filesystem::path& file, const std::string& what);
+
 ImageRGB read_image_rgb(const std::filesystem::path& file);
 
 }  // namespace planet

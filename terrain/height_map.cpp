@@ -1,6 +1,8 @@
 #include "terrain/height_map.h"
 
 #include "core/error.h"
+#include "core/image_io.h"
+#include "core/paths.h"
 
 #include <OpenImageIO/imageio.h>
 #include <fmt/format.h>
@@ -12,6 +14,8 @@
 namespace planet {
 
 HeightMap::HeightMap(const std::filesystem::path& file, double scale, double offset) {
+  check_readable_file(file);
+  check_image_signature(file, "a height map");
   auto in = OIIO::ImageInput::open(file.string());
   if (!in) {
     throw InputError(
