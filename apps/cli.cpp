@@ -41,6 +41,7 @@ std::unique_ptr<CLI::App> make_cli() {
   CLI::App& probe = add_probe_command(*app);
   add_probe_atmosphere_commands(probe);
   add_fly_command(*app);
+  add_soak_command(*app);
   add_techniques_command(*app);
   add_lab_command(*app);
   add_probe_sun_command(probe);

@@ -19,6 +19,8 @@ CLI::App& add_probe_command(CLI::App& app);
 // `planet probe transmittance` and `planet probe sky`.
 void add_probe_atmosphere_commands(CLI::App& probe);
 void add_fly_command(CLI::App& app);
+// `planet soak`: a long flight that fails if anything grows.
+void add_soak_command(CLI::App& app);
 // `planet techniques`: the registry of atmosphere techniques.
 void add_techniques_command(CLI::App& app);
 void add_lab_command(CLI::App& app);

@@ -5,9 +5,13 @@ namespace planet {
 DepthProbe::DepthProbe()
     : program_(Program::graphics("gl/shaders/fullscreen.vert", "gl/shaders/depth_probe.frag")) {
   glCreateQueries(GL_ANY_SAMPLES_PASSED, 1, &query_);
+  note_gl_objects(GlObjectKind::query, 1);
 }
 
-DepthProbe::~DepthProbe() { glDeleteQueries(1, &query_); }
+DepthProbe::~DepthProbe() {
+  glDeleteQueries(1, &query_);
+  note_gl_objects(GlObjectKind::query, -1);
+}
 
 bool DepthProbe::any_nearer(GLuint depth_texture, int width, int height, float near,
                             float view_depth) {

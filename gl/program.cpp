@@ -2,6 +2,7 @@
 
 #include "core/data_paths.h"
 #include "core/error.h"
+#include "gl/live_objects.h"
 
 #include <fmt/format.h>
 
@@ -99,6 +100,7 @@ GLuint link(const std::vector<GLuint>& shaders, const std::string& what) {
     glDeleteProgram(program);
     throw SystemError(fmt::format("program {} does not link:\n{}", what, log));
   }
+  note_gl_objects(GlObjectKind::program, 1);
   return program;
 }
 
@@ -121,8 +123,13 @@ Program Program::compute(const std::string& compute, const std::vector<std::stri
   return Program(link({planet::compile(GL_COMPUTE_SHADER, compute, defines)}, compute));
 }
 
-Program::~Program() {
-  if (id_) glDeleteProgram(id_);
+Program::~Program() { release(); }
+
+void Program::release() {
+  if (!id_) return;
+  glDeleteProgram(id_);
+  note_gl_objects(GlObjectKind::program, -1);
+  id_ = 0;
 }
 
 Program::Program(Program&& other) noexcept : id_(other.id_), uniforms_(std::move(other.uniforms_)) {
@@ -131,7 +138,7 @@ Program::Program(Program&& other) noexcept : id_(other.id_), uniforms_(std::move
 
 Program& Program::operator=(Program&& other) noexcept {
   if (this != &other) {
-    if (id_) glDeleteProgram(id_);
+    release();
     id_ = other.id_;
     uniforms_ = std::move(other.uniforms_);
     other.id_ = 0;

@@ -39,6 +39,7 @@ class Program {
 
  private:
   explicit Program(GLuint id) : id_(id) {}
+  void release();  // deletes the program (counted in gl/live_objects.h)
   GLuint id_ = 0;
   mutable std::map<std::string, GLint> uniforms_;
 };

@@ -1,6 +1,8 @@
 #pragma once
 // Small owning wrappers for GL objects, so that a thrown error never leaks
 // them and a moved-from object deletes nothing.
+#include "gl/live_objects.h"
+
 #include <epoxy/gl.h>
 
 #include <utility>
@@ -8,18 +10,19 @@
 
 namespace planet {
 
-template <void (*Delete)(GLuint)>
+template <GlObjectKind Kind, void (*Delete)(GLuint)>
 class GlName {
  public:
   GlName() = default;
-  explicit GlName(GLuint id) : id_(id) {}
-  ~GlName() {
-    if (id_) Delete(id_);
+  // Takes ownership of a name just made.
+  explicit GlName(GLuint id) : id_(id) {
+    if (id_) note_gl_objects(Kind, 1);
   }
+  ~GlName() { release(); }
   GlName(GlName&& o) noexcept : id_(std::exchange(o.id_, 0)) {}
   GlName& operator=(GlName&& o) noexcept {
     if (this != &o) {
-      if (id_) Delete(id_);
+      release();
       id_ = std::exchange(o.id_, 0);
     }
     return *this;
@@ -27,6 +30,11 @@ class GlName {
   GLuint id() const { return id_; }
 
  private:
+  void release() {
+    if (!id_) return;
+    Delete(id_);
+    note_gl_objects(Kind, -1);
+  }
   GLuint id_ = 0;
 };
 
@@ -35,10 +43,10 @@ inline void delete_buffer(GLuint id) { glDeleteBuffers(1, &id); }
 inline void delete_framebuffer(GLuint id) { glDeleteFramebuffers(1, &id); }
 inline void delete_vertex_array(GLuint id) { glDeleteVertexArrays(1, &id); }
 
-using Texture = GlName<delete_texture>;
-using Buffer = GlName<delete_buffer>;
-using Framebuffer = GlName<delete_framebuffer>;
-using VertexArray = GlName<delete_vertex_array>;
+using Texture = GlName<GlObjectKind::texture, delete_texture>;
+using Buffer = GlName<GlObjectKind::buffer, delete_buffer>;
+using Framebuffer = GlName<GlObjectKind::framebuffer, delete_framebuffer>;
+using VertexArray = GlName<GlObjectKind::vertex_array, delete_vertex_array>;
 
 // Immutable 2D and 3D textures with linear filtering and clamped edges.
 Texture make_texture_2d(GLenum internal_format, int width, int height);

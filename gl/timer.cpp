@@ -1,5 +1,7 @@
 #include "gl/timer.h"
 
+#include "gl/live_objects.h"
+
 #include <algorithm>
 
 namespace planet {
@@ -8,13 +10,16 @@ GpuTimer::~GpuTimer() {
   for (auto& p : pending_) {
     if (!p.reused) free_.push_back(p.query);
   }
-  if (!free_.empty()) glDeleteQueries(GLsizei(free_.size()), free_.data());
+  if (free_.empty()) return;
+  glDeleteQueries(GLsizei(free_.size()), free_.data());
+  note_gl_objects(GlObjectKind::query, -long(free_.size()));
 }
 
 void GpuTimer::begin(const std::string& pass) {
   GLuint q = 0;
   if (free_.empty()) {
     glCreateQueries(GL_TIME_ELAPSED, 1, &q);
+    note_gl_objects(GlObjectKind::query, 1);
   } else {
     q = free_.back();
     free_.pop_back();

@@ -7,6 +7,10 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#ifdef __GLIBC__
+#include <malloc.h>
+#endif
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -47,7 +51,14 @@ void FrameRenderer::set_body(const Body& body, std::optional<AtmosphereModel> at
   atmosphere_ = std::move(atmosphere);
   technique_ = std::move(technique);
 
+  terrain_.reset();  // the old body's tiles go before the new body's come
   terrain_ = std::make_unique<TerrainRenderer>(body, terrain_options_);
+#ifdef __GLIBC__
+  // The old body's tiles and tables were hundreds of allocations freed at
+  // once; hand the free pages back to the system rather than keep them
+  // resident for a body that may never come back.
+  malloc_trim(0);
+#endif
 
   if (atmosphere_) set_atmosphere(*atmosphere_);
   check_gl_errors("FrameRenderer::set_body");

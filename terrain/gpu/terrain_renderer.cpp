@@ -145,6 +145,7 @@ TerrainStats TerrainRenderer::draw(const Camera& camera, int width, int height,
   }
   for (const TileKey& k : cache_->evict(frame_)) gpu_tiles_.erase(k);
   stats.tiles_resident = cache_->tile_count();
+  stats.tiles_on_gpu = gpu_tiles_.size();
   stats.bytes_resident = cache_->bytes();
   check_gl_errors("TerrainRenderer::draw");
   return stats;

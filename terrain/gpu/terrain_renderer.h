@@ -28,6 +28,7 @@ struct TerrainStats {
   int tiles_drawn = 0;
   int64_t triangles = 0;
   size_t tiles_resident = 0, bytes_resident = 0;
+  size_t tiles_on_gpu = 0;  // of the resident, those with their GL buffer (one each)
   int tiles_wanted = 0;     // wanted but not resident when drawn
   double max_error_px = 0;  // largest projected error bound of a drawn tile
   int max_level = 0;
