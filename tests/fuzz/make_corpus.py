@@ -106,7 +106,7 @@ def height_map_seeds(scratch):
         fmt = {".png": "uint16", ".exr": "half", ".tif": "float", ".pgm": "uint8", ".hdr": "float", ".jpg": "uint8"}[ext]
         channels = "3" if ext == ".hdr" or ext == ".jpg" else "1"
         fill = ["--fill:bottom=0,0,0:top=1,1,1", "0,0,16,8"] if channels == "3" else ["--fill:bottom=0:top=1", "0,0,16,8"]
-        subprocess.run(["oiiotool", "--create", "16x8", channels, *fill, "-d", fmt, "-o", str(f)], check=True)
+        subprocess.run(["oiiotool", "--nosoftwareattrib", "--create", "16x8", channels, *fill, "-d", fmt, "-o", str(f)], check=True)
         data = f.read_bytes()
         put("height_map", bytes([i]) + data)
         put("height_map", bytes([i]) + data[: len(data) // 2])
