@@ -21,8 +21,10 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 namespace planet {
 
@@ -154,6 +156,30 @@ ExrExtras frame_exr_extras(const FlightScript& script, const FlightPath& path, d
   return extras;
 }
 
+// A frame is published as its images and then its sidecar, three renames:
+// a capture killed between them leaves the images of a frame that is not
+// one. Those of the frames [first, end) go before a capture writes them
+// again, so that a resumed folder holds whole frames only even if this run
+// stops early; other frames are left to whoever writes them (a slice
+// running beside this one into the same folder).
+void remove_frames_without_sidecar(const std::filesystem::path& dir, int first, int end) {
+  std::error_code ec;
+  std::vector<std::filesystem::path> orphans;
+  for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
+    const std::filesystem::path& file = entry.path();
+    std::string name = file.filename().string(), ext = file.extension().string();
+    int frame = -1;
+    if (std::sscanf(name.c_str(), "frame_%d.", &frame) != 1 || frame < first || frame >= end ||
+        (ext != ".exr" && ext != ".png")) {
+      continue;
+    }
+    std::filesystem::path side = file;
+    side.replace_extension(".json");
+    if (!std::filesystem::exists(side, ec)) orphans.push_back(file);
+  }
+  for (const auto& file : orphans) std::filesystem::remove(file, ec);
+}
+
 }  // namespace
 
 void check_frames(const FlightScript& script, const CaptureOptions& options) {
@@ -234,6 +260,7 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
   const auto finished_marker = options.out_dir / "capture.json";
   std::filesystem::remove(finished_marker);
   remove_stale_partials(options.out_dir);
+  remove_frames_without_sidecar(options.out_dir, first, end);
   StagingFolder staging(options.out_dir);
 
   FrameRenderer renderer(script.width, script.height);
