@@ -1,6 +1,7 @@
 // planet reference: the path-traced ground truth of a canonical scene, as
 // linear EXR (and a tone-mapped PNG beside it), through the reference cache.
 #include "apps/commands.h"
+#include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/interrupt.h"
 #include "core/paths.h"
@@ -39,6 +40,7 @@ void run_share(const ReferenceArgs& args, const Scene& scene, const PathBudget& 
                ReferenceMode mode, const Share& share) {
   std::filesystem::path out(args.out);
   OutputFolder folder(reference_shares_dir(out), "--out");
+  remove_stale_partials(reference_shares_dir(out));
   double pixels = double(scene.width) * scene.height;
   double share_paths = budget.spp * std::ceil(pixels / share.count);
   Progress progress(fmt::format("reference {} share {}", scene.name, share.label()), share_paths,
@@ -130,6 +132,7 @@ void run_reference(const ReferenceArgs& args) {
   }
   std::filesystem::path out(args.out);
   OutputFolder folder(out.has_parent_path() ? out.parent_path() : ".", "--out");
+  remove_stale_partials(out.has_parent_path() ? out.parent_path() : ".");
   std::filesystem::path cached = reference_cache_file(scene, model, budget, mode);
   bool was_cached = reference_cached(scene, budget, mode);
   if (!was_cached && !args.quiet) {

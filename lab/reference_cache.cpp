@@ -1,5 +1,6 @@
 #include "lab/reference_cache.h"
 
+#include "core/atomic_file.h"
 #include "core/cache_dir.h"
 #include "core/data_paths.h"
 #include "core/error.h"
@@ -202,6 +203,8 @@ ReferenceRender reference_render(const Scene& scene, const PathBudget& paths, Re
   std::string view_key = reference_view_key(scene, model, mode);
   std::filesystem::path sums_file = reference_sums_file(file);
   std::filesystem::create_directories(file.parent_path());
+  // What a render killed while writing its sums or images left.
+  remove_stale_partials(file.parent_path());
   ReferenceSettings settings = reference_settings(scene, paths);
   settings.progress = progress;
   settings.cancel = cancel;

@@ -304,6 +304,7 @@ SweepCell read_sweep_cell(const std::filesystem::path& file) {
 std::vector<SweepCell> run_sweep(const SweepOptions& o, const SweepPlan& plan,
                                  const std::function<void(int, int, const std::string&)>& progress) {
   const int total = int(plan.scenes.size() * plan.points.size());
+  remove_stale_partials(o.out);
   int done = 0;
   std::vector<SweepCell> cells;
   for (const Scene& scene : plan.scenes) {
@@ -325,6 +326,7 @@ std::vector<SweepCell> run_sweep(const SweepOptions& o, const SweepPlan& plan,
     truth.reference_rgb8 = tone_mapped_rgb8(truth.image, scene.exposure);
     std::filesystem::path dir = o.out / "cells" / scene.name;
     std::filesystem::create_directories(dir);
+    remove_stale_partials(dir);  // what a sweep killed while writing left
     write_tone_mapped_png(dir / "reference.png", enlarged(truth.image), scene.exposure);
     for (const auto& [technique, quality] : plan.points) {
       std::filesystem::path file = cell_file(o, scene.name, technique, quality);

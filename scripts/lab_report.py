@@ -62,8 +62,10 @@ def finish(fig, ax, stem):
     ax.grid(True, which="both", linewidth=0.3, alpha=0.5)
     ax.legend(fontsize=7, loc="center left", bbox_to_anchor=(1.01, 0.5), frameon=False)
     fig.tight_layout()
-    fig.savefig(stem + ".png")
-    fig.savefig(stem + ".svg")
+    for ext in ("png", "svg"):
+        # Whole or absent: a sweep killed while charting leaves no half chart.
+        fig.savefig(stem + ".part", format=ext)
+        os.replace(stem + ".part", f"{stem}.{ext}")
     plt.close(fig)
 
 

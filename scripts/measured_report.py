@@ -60,7 +60,9 @@ def band_index(doc, nm):
 
 def save(fig, out, name):
     path = os.path.join(out, name)
-    fig.savefig(path, dpi=110, bbox_inches="tight")
+    # Whole or absent: a run killed while charting leaves no half chart.
+    fig.savefig(path + ".part", format=os.path.splitext(path)[1][1:], dpi=110, bbox_inches="tight")
+    os.replace(path + ".part", path)
     plt.close(fig)
     return path
 

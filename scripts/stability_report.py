@@ -102,8 +102,11 @@ def short_percent(x):
 
 
 def finish(fig, stem):
-    fig.savefig(stem + ".png", dpi=110, bbox_inches="tight")
-    fig.savefig(stem + ".svg", bbox_inches="tight")
+    # Whole or absent: a run killed while charting leaves no half chart.
+    fig.savefig(stem + ".part", format="png", dpi=110, bbox_inches="tight")
+    os.replace(stem + ".part", stem + ".png")
+    fig.savefig(stem + ".part", format="svg", bbox_inches="tight")
+    os.replace(stem + ".part", stem + ".svg")
     plt.close(fig)
 
 
