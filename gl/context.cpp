@@ -1,6 +1,7 @@
 #include "gl/context.h"
 
 #include "core/error.h"
+#include "gl/driver_watch.h"
 
 // epoxy before GLFW: GLFW would pull in the Khronos GL header first.
 #include <epoxy/egl.h>
@@ -130,10 +131,12 @@ bool ContextOptions::default_debug() {
 }
 
 std::unique_ptr<GlContext> GlContext::create_headless(const ContextOptions& options) {
+  driver_timeout_seconds();  // a bad PLANET_GL_TIMEOUT_S is said before any work
   return std::make_unique<EglContext>(options);
 }
 
 std::unique_ptr<GlContext> GlContext::create_window(const ContextOptions& options) {
+  driver_timeout_seconds();
   return std::make_unique<GlfwContext>(options);
 }
 

@@ -1,5 +1,7 @@
 #include "gl/depth_probe.h"
 
+#include "gl/driver_watch.h"
+
 namespace planet {
 
 DepthProbe::DepthProbe()
@@ -33,6 +35,7 @@ bool DepthProbe::any_nearer(GLuint depth_texture, int width, int height, float n
   glDepthMask(GL_TRUE);
   glDisable(GL_DEPTH_TEST);
   GLuint any = 0;
+  DriverWait wait("waiting for a depth probe's answer");
   glGetQueryObjectuiv(query_, GL_QUERY_RESULT, &any);
   return any != 0;
 }

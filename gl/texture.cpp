@@ -1,6 +1,7 @@
 #include "gl/texture.h"
 
 #include "core/error.h"
+#include "gl/driver_watch.h"
 
 namespace planet {
 
@@ -59,6 +60,7 @@ Buffer make_buffer(size_t bytes, const void* data, GLbitfield flags) {
 
 std::vector<float> read_texture_rgba32f(GLuint texture, int width, int height) {
   std::vector<float> pixels(size_t(width) * size_t(height) * 4);
+  DriverWait wait("reading a float texture back");
   glGetTextureImage(texture, 0, GL_RGBA, GL_FLOAT, GLsizei(pixels.size() * sizeof(float)),
                     pixels.data());
   return pixels;

@@ -1,5 +1,6 @@
 #include "gl/timer.h"
 
+#include "gl/driver_watch.h"
 #include "gl/live_objects.h"
 
 #include <algorithm>
@@ -24,7 +25,10 @@ void GpuTimer::begin(const std::string& pass) {
     q = free_.back();
     free_.pop_back();
   }
-  if (synchronous_) glFinish();
+  if (synchronous_) {
+    DriverWait wait("finishing the passes before a timed one");
+    glFinish();
+  }
   pending_.push_back({pass, q, std::chrono::steady_clock::now()});
   glBeginQuery(GL_TIME_ELAPSED, q);
 }
@@ -32,7 +36,10 @@ void GpuTimer::begin(const std::string& pass) {
 void GpuTimer::end() {
   glEndQuery(GL_TIME_ELAPSED);
   if (!synchronous_) return;
-  glFinish();
+  {
+    DriverWait wait("finishing a timed pass");
+    glFinish();
+  }
   Pending& p = pending_.back();
   p.wall_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - p.begun).count();
@@ -52,6 +59,7 @@ std::vector<PassTiming> GpuTimer::collect() {
       continue;
     }
     GLuint64 ns = 0;
+    DriverWait wait("waiting for a pass's GPU time");
     glGetQueryObjectui64v(p.query, GL_QUERY_RESULT, &ns);
     // A pass cannot take longer than the wall time from its begin() to now.
     // Mesa's llvmpipe reports the first draw-carrying query of a context as

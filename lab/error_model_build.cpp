@@ -3,6 +3,7 @@
 #include "atmosphere/gpu/registry.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "gl/driver_watch.h"
 #include "render/frame.h"
 
 #include <epoxy/gl.h>
@@ -46,7 +47,10 @@ class EmptyCache {
 double frame_ms(FrameRenderer& renderer, const Scene& scene) {
   auto start = std::chrono::steady_clock::now();
   renderer.render(scene.camera, scene.sun_dir_body, scene.exposure);
-  glFinish();
+  {
+    DriverWait wait("finishing a timed frame");
+    glFinish();
+  }
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
       .count();
 }
@@ -72,7 +76,10 @@ double measure_model_change_ms(const Scene& scene, const std::string& choice) {
   auto start = std::chrono::steady_clock::now();
   renderer.set_atmosphere(changed);
   renderer.render(scene.camera, scene.sun_dir_body, scene.exposure);
-  glFinish();
+  {
+    DriverWait wait("finishing a timed model change");
+    glFinish();
+  }
   double total =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return std::max(total - steady[1], 0.0);

@@ -4,6 +4,7 @@
 #include "atmosphere/gpu/atmosphere_block.h"
 #include "core/error.h"
 #include "gl/context.h"
+#include "gl/driver_watch.h"
 
 #include <glm/gtc/type_ptr.hpp>
 
@@ -206,8 +207,11 @@ std::vector<float> FrameRenderer::read_hdr() const {
 
 std::vector<float> FrameRenderer::read_distance(const Camera& camera) const {
   std::vector<float> depth(size_t(width_) * size_t(height_));
-  glGetTextureImage(depth_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
-                    GLsizei(depth.size() * sizeof(float)), depth.data());
+  {
+    DriverWait wait("reading the frame's depth back");
+    glGetTextureImage(depth_.id(), 0, GL_DEPTH_COMPONENT, GL_FLOAT,
+                      GLsizei(depth.size() * sizeof(float)), depth.data());
+  }
   const glm::dmat3 ray_from_ndc = view_ray_from_ndc(camera.vertical_fov, double(width_) / height_);
   for (int y = 0; y < height_; ++y) {
     for (int x = 0; x < width_; ++x) {
@@ -227,6 +231,7 @@ std::vector<float> FrameRenderer::read_distance(const Camera& camera) const {
 
 std::vector<uint8_t> FrameRenderer::read_ldr() const {
   std::vector<uint8_t> pixels(size_t(width_) * size_t(height_) * 4);
+  DriverWait wait("reading the frame's image back");
   glGetTextureImage(ldr_.id(), 0, GL_RGBA, GL_UNSIGNED_BYTE, GLsizei(pixels.size()), pixels.data());
   return pixels;
 }

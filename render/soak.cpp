@@ -2,6 +2,7 @@
 
 #include "atmosphere/gpu/registry.h"
 #include "core/error.h"
+#include "gl/driver_watch.h"
 #include "render/frame.h"
 #include "sim/body.h"
 #include "sim/geodesy.h"
@@ -168,7 +169,10 @@ SoakResult run_soak(const SoakOptions& o,
       }
       bool cycle_end = i == leg_frames - 1 && (leg + 1) % int(o.bodies.size()) == 0;
       if (frame % o.sample_every == 0 || cycle_end) {
-        glFinish();
+        {
+          DriverWait wait("finishing a frame of the soak");
+          glFinish();
+        }
         SoakSample sample{frame, v.body.name, choice, above, resident_mib(), heap_in_use_mib(),
                           tiles, ts.tiles_on_gpu, live_gl_objects()};
         const long fixed = sample.gl.total() - long(sample.tiles);

@@ -4,6 +4,7 @@
 #include "core/image_io.h"
 #include "core/progress.h"
 #include "gl/context.h"
+#include "gl/driver_watch.h"
 #include "sim/free_flight.h"
 #include "sim/geodesy.h"
 #include "sim/orbit_flight.h"
@@ -102,7 +103,10 @@ bool FlySession::frame(double real_dt) {
   stats_ = renderer_->render(cam, sun, exposure_);
   blit();
   apply(hud_.draw(hud_view(cam, sun, real_dt)));
-  glfwSwapBuffers(window_);
+  {
+    DriverWait wait("showing the frame (swapping buffers)");
+    glfwSwapBuffers(window_);
+  }
   check_gl_errors("fly frame");
   return true;
 }

@@ -7,6 +7,7 @@
 #include "core/interrupt.h"
 #include "core/progress.h"
 #include "gl/context.h"
+#include "gl/driver_watch.h"
 #include "gl/timer.h"
 
 #include <fmt/format.h>
@@ -201,6 +202,7 @@ void BrunetonTechnique::update(const AtmosphereModel& model) {
     for (auto& t : sizes) {
       t.rgba.resize(size_t(t.width) * size_t(t.height) * size_t(t.depth) * 4);
     }
+    DriverWait wait("reading the bruneton tables back");
     for (size_t i = 0; i < sizes.size(); ++i) {
       glGetTextureImage(textures[i]->id(), 0, GL_RGBA, GL_FLOAT,
                         GLsizei(sizes[i].rgba.size() * sizeof(float)), sizes[i].rgba.data());
@@ -243,7 +245,10 @@ void BrunetonTechnique::precompute() {
       } else {
         glDispatchCompute(gx, 1, 1);
       }
-      glFinish();
+      {
+        DriverWait wait("finishing a layer of the bruneton tables");
+        glFinish();
+      }
       progress.update(order_at + part * double(layer + 1) / s.r);
       // Ctrl-C under a command's InterruptScope (without one SIGINT ends
       // the process at once): nothing is kept, the cache is written whole
@@ -348,7 +353,10 @@ void BrunetonTechnique::precompute() {
     bind_image(1, irradiance_, GL_RGBA32F, false, GL_READ_WRITE);
     glDispatchCompute(groups(s.irradiance_width, 8), groups(s.irradiance_height, 8), 1);
     glMemoryBarrier(kTableBarrier);
-    glFinish();
+    {
+      DriverWait wait("finishing the bruneton irradiance");
+      glFinish();
+    }
     precompute_seconds_.back() += seconds_since(tail_began);
   }
   progress.finish();
