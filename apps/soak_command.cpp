@@ -35,6 +35,10 @@ void run(SoakArgs& args) {
   for (const std::string& b : o.bodies) load_body(find_body_file(b));
   for (const std::string& t : o.techniques) parse_technique(t);
   const int legs = o.cycles * int(o.bodies.size());
+  if (o.cycles <= o.warmup_cycles) {
+    throw InputError(fmt::format("soak: --cycles {} leaves no round after --warmup-cycles {}",
+                                 o.cycles, o.warmup_cycles));
+  }
   if (o.frames / legs < 2 * int(o.techniques.size())) {
     throw InputError(fmt::format(
         "soak: --frames {} over --cycles {} of {} bodies gives {} frames a body; {} techniques "
@@ -67,10 +71,10 @@ void run(SoakArgs& args) {
     std::exit(kInterruptedExitStatus);
   }
   std::printf(
-      "soak: %d frames in %.0f s; resident memory after the warm-up (%d frames): start %.1f MiB, "
-      "peak %.1f, end %.1f; GL objects %ld -> %ld (peak %ld), of them outside the tile cache %ld "
+      "soak: %d frames in %.0f s; resident memory: warm-up (%d frames) peak %.1f MiB; after it "
+      "start %.1f, peak %.1f, end %.1f; GL objects %ld -> %ld (peak %ld), of them outside the tile cache %ld "
       "(peak %ld); terrain tiles peak %.1f of %.1f MiB\n",
-      o.frames, r.wall_seconds, r.warmup_frames, r.rss_start_mib, r.rss_peak_mib, r.rss_end_mib,
+      o.frames, r.wall_seconds, r.warmup_frames, r.rss_warmup_peak_mib, r.rss_start_mib, r.rss_peak_mib, r.rss_end_mib,
       r.gl_start.total(), r.gl_end.total(), r.gl_peak.total(), r.gl_fixed_start, r.gl_fixed_peak,
       r.tiles_peak_mib, r.tiles_budget_mib);
   if (!r.failures.empty()) {
@@ -88,12 +92,15 @@ void add_soak_command(CLI::App& app) {
   CLI::App* cmd = app.add_subcommand(
       "soak",
       "Fly each body from the ground to orbit and back, round after round, switching techniques; "
-      "fail if memory, GL objects or terrain tiles grow after the first round");
+      "fail if memory, GL objects or terrain tiles grow after the warm-up rounds");
   SoakOptions& o = args->options;
   cmd->add_option("--frames", o.frames, "Frames in all (default 10000)")
       ->check(CLI::Range(8, 10000000));
-  cmd->add_option("--cycles", o.cycles, "Rounds over the bodies; the first is the warm-up")
+  cmd->add_option("--cycles", o.cycles, "Rounds over the bodies, the warm-up's included")
       ->check(CLI::Range(2, 100000));
+  cmd->add_option("--warmup-cycles", o.warmup_cycles,
+                  "The first rounds, which fill caches and shape the heap (default 2)")
+      ->check(CLI::Range(1, 100000));
   cmd->add_option("--width", o.width, "Frame width")->check(CLI::Range(8, 4096));
   cmd->add_option("--height", o.height, "Frame height")->check(CLI::Range(8, 4096));
   cmd->add_option("--bodies", o.bodies, "Bodies in turn (names or files)")->delimiter(',');

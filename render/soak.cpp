@@ -86,7 +86,11 @@ nlohmann::json SoakResult::to_json() const {
   }
   return {{"frames", samples.empty() ? 0 : samples.back().frame + 1},
           {"warmup_frames", warmup_frames},
-          {"rss_mib", {{"start", rss_start_mib}, {"peak", rss_peak_mib}, {"end", rss_end_mib}}},
+          {"rss_mib",
+           {{"warmup_peak", rss_warmup_peak_mib},
+            {"start", rss_start_mib},
+            {"peak", rss_peak_mib},
+            {"end", rss_end_mib}}},
           {"gl_objects", {{"start", gl_json(gl_start)}, {"peak", gl_json(gl_peak)}, {"end", gl_json(gl_end)}}},
           {"gl_objects_outside_tile_cache", {{"start", gl_fixed_start}, {"peak", gl_fixed_peak}}},
           {"tiles_mib", {{"peak", tiles_peak_mib}, {"budget", tiles_budget_mib}}},
@@ -102,14 +106,16 @@ SoakResult run_soak(const SoakOptions& o,
                     const std::function<bool()>& stop) {
   const int legs = o.cycles * int(o.bodies.size());
   const int leg_frames = o.frames / legs;
-  if (o.cycles < 2 || leg_frames < int(o.techniques.size()) * 2) {
+  if (o.warmup_cycles < 1 || o.cycles <= o.warmup_cycles ||
+      leg_frames < int(o.techniques.size()) * 2) {
     throw InputError(fmt::format(
-        "soak: {} frames over {} cycles of {} bodies leave too few frames a leg", o.frames,
-        o.cycles, o.bodies.size()));
+        "soak: {} frames over {} cycles ({} of warm-up) of {} bodies leave too few frames a leg "
+        "or no round after the warm-up",
+        o.frames, o.cycles, o.warmup_cycles, o.bodies.size()));
   }
   const int total = leg_frames * legs;
   SoakResult r;
-  r.warmup_frames = leg_frames * int(o.bodies.size());
+  r.warmup_frames = leg_frames * int(o.bodies.size()) * o.warmup_cycles;
   r.tiles_budget_mib = double(o.terrain_cache_bytes) / double(1 << 20);
 
   FrameRenderer renderer(o.width, o.height);
@@ -196,13 +202,15 @@ SoakResult run_soak(const SoakOptions& o,
     }
   }
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (r.interrupted || cycle_end_rss.size() < 2) return r;
+  if (r.interrupted || int(cycle_end_rss.size()) <= o.warmup_cycles) return r;
 
   // Where the warm-up left it: the same phase (the end of a round) as every
   // later round is measured at, and the highest it reached.
-  r.rss_start_mib = cycle_end_rss.front();
+  const size_t warm = size_t(o.warmup_cycles) - 1;
+  r.rss_start_mib = cycle_end_rss[warm];
   r.rss_end_mib = cycle_end_rss.back();
-  r.gl_start = cycle_end_gl.front();
+  r.rss_warmup_peak_mib = warmup_peak;
+  r.gl_start = cycle_end_gl[warm];
   r.gl_end = cycle_end_gl.back();
   r.gl_peak = *std::max_element(cycle_end_gl.begin(), cycle_end_gl.end(),
                                 [](const auto& a, const auto& b) { return a.total() < b.total(); });

@@ -1,60 +1,104 @@
 #include "terrain/tile_cache.h"
 
+#include "terrain/terrain_surface.h"
+
 #include <algorithm>
 #include <chrono>
 
 namespace planet {
 
+struct TileCache::State {
+  struct Entry {
+    std::shared_ptr<const TileMesh> mesh;
+    uint64_t last_used = 0;
+    size_t bytes = 0;  // of its vertices, whether held here or on the GPU
+  };
+
+  explicit State(const TerrainSurface& s) : surface(s) {}
+  void work();
+
+  const TerrainSurface surface;
+  std::mutex mutex;
+  std::condition_variable wake_workers, tile_done, worker_left;
+  std::deque<TileKey> queue;
+  std::unordered_map<TileKey, Entry, TileKeyHash> tiles;
+  std::unordered_map<TileKey, bool, TileKeyHash> in_flight;
+  size_t bytes = 0;
+  uint64_t built = 0;
+  bool stop = false;
+  int running = 0;  // workers not yet returned
+};
+
 TileCache::TileCache(const TerrainSurface& surface, size_t budget_bytes, int workers)
-    : surface_(&surface), budget_(budget_bytes) {
-  for (int i = 0; i < std::max(workers, 1); ++i) threads_.emplace_back([this] { work(); });
+    : state_(std::make_shared<State>(surface)), budget_(budget_bytes) {
+  const int n = std::max(workers, 1);
+  state_->running = n;
+  for (int i = 0; i < n; ++i) {
+    threads_.emplace_back([state = state_] { state->work(); });
+  }
 }
 
 TileCache::~TileCache() {
-  {
-    std::lock_guard lock(mutex_);
-    stop_ = true;
+  State& s = *state_;
+  std::unique_lock lock(s.mutex);
+  s.stop = true;
+  s.queue.clear();
+  s.wake_workers.notify_all();
+  bool all_left = s.worker_left.wait_for(
+      lock, std::chrono::duration<double>(kWorkerStopSeconds), [&] { return s.running == 0; });
+  lock.unlock();
+  for (auto& t : threads_) {
+    // A worker still in its tile keeps the state alive and returns when
+    // (if ever) the tile is done.
+    if (all_left) {
+      t.join();
+    } else {
+      t.detach();
+    }
   }
-  wake_workers_.notify_all();
-  for (auto& t : threads_) t.join();
 }
 
 void TileCache::request(const std::vector<TileKey>& keys) {
+  State& s = *state_;
   {
-    std::lock_guard lock(mutex_);
-    queue_.clear();
+    std::lock_guard lock(s.mutex);
+    s.queue.clear();
     for (const TileKey& k : keys) {
-      if (!tiles_.count(k) && !in_flight_.count(k)) queue_.push_back(k);
+      if (!s.tiles.count(k) && !s.in_flight.count(k)) s.queue.push_back(k);
     }
   }
-  wake_workers_.notify_all();
+  s.wake_workers.notify_all();
 }
 
 bool TileCache::resident(const TileKey& key) const {
-  std::lock_guard lock(mutex_);
-  return tiles_.count(key) > 0;
+  State& s = *state_;
+  std::lock_guard lock(s.mutex);
+  return s.tiles.count(key) > 0;
 }
 
 bool TileCache::lookup(const TileKey& key, ResidentTile& out) const {
-  std::lock_guard lock(mutex_);
-  auto it = tiles_.find(key);
-  if (it == tiles_.end()) return false;
+  State& s = *state_;
+  std::lock_guard lock(s.mutex);
+  auto it = s.tiles.find(key);
+  if (it == s.tiles.end()) return false;
   out = {it->second.mesh->error, it->second.mesh->heights};
   return true;
 }
 
 std::shared_ptr<const TileMesh> TileCache::use(const TileKey& key, uint64_t frame) {
-  std::lock_guard lock(mutex_);
-  auto it = tiles_.find(key);
-  if (it == tiles_.end()) return nullptr;
+  State& s = *state_;
+  std::lock_guard lock(s.mutex);
+  auto it = s.tiles.find(key);
+  if (it == s.tiles.end()) return nullptr;
   it->second.last_used = frame;
   return it->second.mesh;
 }
 
 void TileCache::release_vertices(const TileKey& key) {
-  std::lock_guard lock(mutex_);
-  auto it = tiles_.find(key);
-  if (it == tiles_.end() || it->second.mesh->vertices.empty()) return;
+  State& s = *state_;
+  std::lock_guard lock(s.mutex);
+  auto it = s.tiles.find(key);
+  if (it == s.tiles.end() || it->second.mesh->vertices.empty()) return;
   auto kept = std::make_shared<TileMesh>();
   kept->key = it->second.mesh->key;
   kept->center_body = it->second.mesh->center_body;
@@ -64,11 +108,12 @@ void TileCache::release_vertices(const TileKey& key) {
 }
 
 std::vector<TileKey> TileCache::evict(uint64_t frame) {
-  std::lock_guard lock(mutex_);
+  State& s = *state_;
+  std::lock_guard lock(s.mutex);
   std::vector<TileKey> dropped;
-  if (bytes_ <= budget_) return dropped;
+  if (s.bytes <= budget_) return dropped;
   std::vector<std::pair<uint64_t, TileKey>> candidates;
-  for (const auto& [key, entry] : tiles_) {
+  for (const auto& [key, entry] : s.tiles) {
     if (entry.last_used < frame) candidates.emplace_back(entry.last_used, key);
   }
   std::sort(candidates.begin(), candidates.end(), [](const auto& a, const auto& b) {
@@ -76,67 +121,73 @@ std::vector<TileKey> TileCache::evict(uint64_t frame) {
     return a.first != b.first ? a.first < b.first : a.second.level > b.second.level;
   });
   for (const auto& [used, key] : candidates) {
-    if (bytes_ <= budget_) break;
-    auto it = tiles_.find(key);
-    bytes_ -= it->second.bytes;
-    tiles_.erase(it);
+    if (s.bytes <= budget_) break;
+    auto it = s.tiles.find(key);
+    s.bytes -= it->second.bytes;
+    s.tiles.erase(it);
     dropped.push_back(key);
   }
   return dropped;
 }
 
 std::vector<TileKey> TileCache::wait_for(const std::vector<TileKey>& keys, double timeout_s) {
+  State& s = *state_;
   auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
-  std::unique_lock lock(mutex_);
+  std::unique_lock lock(s.mutex);
   auto missing = [&] {
     std::vector<TileKey> m;
     for (const TileKey& k : keys) {
-      if (!tiles_.count(k)) m.push_back(k);
+      if (!s.tiles.count(k)) m.push_back(k);
     }
     return m;
   };
   std::vector<TileKey> m = missing();
   while (!m.empty()) {
-    if (tile_done_.wait_until(lock, deadline) == std::cv_status::timeout) return missing();
+    if (s.tile_done.wait_until(lock, deadline) == std::cv_status::timeout) return missing();
     m = missing();
   }
   return m;
 }
 
 size_t TileCache::bytes() const {
-  std::lock_guard lock(mutex_);
-  return bytes_;
+  State& s = *state_;
+  std::lock_guard lock(s.mutex);
+  return s.bytes;
 }
 
 size_t TileCache::tile_count() const {
-  std::lock_guard lock(mutex_);
-  return tiles_.size();
+  State& s = *state_;
+  std::lock_guard lock(s.mutex);
+  return s.tiles.size();
 }
 
 uint64_t TileCache::tiles_built() const {
-  std::lock_guard lock(mutex_);
-  return built_;
+  State& s = *state_;
+  std::lock_guard lock(s.mutex);
+  return s.built;
 }
 
-void TileCache::work() {
-  std::unique_lock lock(mutex_);
+void TileCache::State::work() {
+  std::unique_lock lock(mutex);
   while (true) {
-    wake_workers_.wait(lock, [&] { return stop_ || !queue_.empty(); });
-    if (stop_) return;
-    TileKey key = queue_.front();
-    queue_.pop_front();
-    if (tiles_.count(key) || in_flight_.count(key)) continue;
-    in_flight_[key] = true;
+    wake_workers.wait(lock, [&] { return stop || !queue.empty(); });
+    if (stop) break;
+    TileKey key = queue.front();
+    queue.pop_front();
+    if (tiles.count(key) || in_flight.count(key)) continue;
+    in_flight[key] = true;
     lock.unlock();
-    auto mesh = std::make_shared<const TileMesh>(build_tile(*surface_, key));
+    auto mesh = std::make_shared<const TileMesh>(build_tile(surface, key));
     lock.lock();
-    in_flight_.erase(key);
-    const size_t bytes = mesh->bytes();
-    bytes_ += bytes;
-    tiles_[key] = Entry{std::move(mesh), 0, bytes};
-    ++built_;
-    tile_done_.notify_all();
+    in_flight.erase(key);
+    const size_t bytes_of = mesh->bytes();
+    bytes += bytes_of;
+    tiles[key] = Entry{std::move(mesh), 0, bytes_of};
+    ++built;
+    tile_done.notify_all();
   }
+  --running;
+  worker_left.notify_all();
 }
 
 }  // namespace planet

@@ -19,8 +19,13 @@ namespace planet {
 
 class TileCache {
  public:
+  // The cache keeps its own copy of the surface (its height source shared).
   TileCache(const TerrainSurface& surface, size_t budget_bytes, int workers);
+  // Stops the workers: each finishes the tile it is building. One that has
+  // not within kWorkerStopSeconds is left behind (it ends with the
+  // process), so that a tile that never finishes cannot hang the program.
   ~TileCache();
+  static constexpr double kWorkerStopSeconds = 5.0;
   TileCache(const TileCache&) = delete;
   TileCache& operator=(const TileCache&) = delete;
 
@@ -42,7 +47,7 @@ class TileCache {
   // budget. Returns the keys dropped, for a GPU mirror to drop too.
   std::vector<TileKey> evict(uint64_t frame);
   // Blocks until every key is resident or `timeout_s` passes; returns the
-  // keys still missing.
+  // keys still missing: a tile that never finishes ends the wait.
   std::vector<TileKey> wait_for(const std::vector<TileKey>& keys, double timeout_s);
 
   size_t bytes() const;
@@ -51,23 +56,12 @@ class TileCache {
   uint64_t tiles_built() const;
 
  private:
-  struct Entry {
-    std::shared_ptr<const TileMesh> mesh;
-    uint64_t last_used = 0;
-    size_t bytes = 0;  // of its vertices, whether held here or on the GPU
-  };
-  void work();
-
-  const TerrainSurface* surface_;
+  // What the workers share with the cache. A worker holds it too, so that
+  // one stuck in a tile that never finishes can be left behind when the
+  // cache goes (~TileCache), and the program still ends.
+  struct State;
+  std::shared_ptr<State> state_;
   size_t budget_;
-  mutable std::mutex mutex_;
-  std::condition_variable wake_workers_, tile_done_;
-  std::deque<TileKey> queue_;
-  std::unordered_map<TileKey, Entry, TileKeyHash> tiles_;
-  std::unordered_map<TileKey, bool, TileKeyHash> in_flight_;
-  size_t bytes_ = 0;
-  uint64_t built_ = 0;
-  bool stop_ = false;
   std::vector<std::thread> threads_;
 };
 

@@ -11,7 +11,10 @@
 #include <glm/gtc/constants.hpp>
 
 #include <unistd.h>
+#include <chrono>
+#include <condition_variable>
 #include <fstream>
+#include <mutex>
 #include <random>
 #include <unordered_map>
 
@@ -167,6 +170,65 @@ size_t resident_set_bytes() {
   size_t pages = 0, resident = 0;
   statm >> pages >> resident;
   return resident * size_t(sysconf(_SC_PAGESIZE));
+}
+
+// Heights that, once armed, answer only when let go: to the cache, a tile
+// that never finishes (a worker stuck in it).
+class StuckHeights final : public HeightSource {
+ public:
+  double height(const glm::dvec3&) const override {
+    std::unique_lock lock(mutex_);
+    let_go_.wait(lock, [&] { return !armed_; });
+    return 0.0;
+  }
+  HeightRange range_near(const glm::dvec3&, double) const override { return {}; }
+  HeightRange range() const override { return {}; }
+  double interpolation_error(double) const override { return 0.0; }
+  void arm(bool armed) {
+    {
+      std::lock_guard lock(mutex_);
+      armed_ = armed;
+    }
+    let_go_.notify_all();
+  }
+
+ private:
+  mutable std::mutex mutex_;
+  mutable std::condition_variable let_go_;
+  bool armed_ = false;
+};
+
+TEST(TileCacheTest, ATileThatNeverFinishesEndsTheWaitAndTheCache) {
+  Body body = load_body(data_dir() / "planets" / "mars.json");
+  body.terrain = nullptr;
+  TerrainConfig config = parse_terrain(body);
+  auto stuck = std::make_shared<StuckHeights>();
+  config.heights = stuck;
+  TerrainSurface surface(body.shape, config);
+  stuck->arm(true);
+  using Clock = std::chrono::steady_clock;
+  auto seconds_since = [](Clock::time_point t) {
+    return std::chrono::duration<double>(Clock::now() - t).count();
+  };
+  const TileKey key{2, 0, 0, 0};
+  auto began = Clock::now();
+  double waited = 0;
+  {
+    TileCache cache(surface, size_t(1) << 20, 1);
+    cache.request({key});
+    std::vector<TileKey> missing = cache.wait_for({key}, 0.5);
+    waited = seconds_since(began);
+    ASSERT_EQ(missing.size(), 1u);
+    EXPECT_TRUE(missing[0] == key);
+    EXPECT_GE(waited, 0.5);
+    began = Clock::now();
+  }  // the worker, still in the tile, is left behind
+  double stopping = seconds_since(began);
+  std::printf("the wait gave up after %.2f s, the cache went after %.2f s\n", waited, stopping);
+  // Its bound, with room for a loaded machine: the point is that it ends.
+  EXPECT_LT(stopping, TileCache::kWorkerStopSeconds + 10.0);
+  // Let go, the worker left behind finishes its tile on the state it holds.
+  stuck->arm(false);
 }
 
 TEST(TileCacheTest, LongFlightStaysUnderBudgetWithoutGrowth) {
