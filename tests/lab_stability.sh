@@ -6,12 +6,7 @@
 # refused in one line before any work. Exit 77 (skipped) without matplotlib.
 set -uo pipefail
 planet="$1"; work="$2"
-python=""
-for p in python3 /usr/bin/python3; do
-  "$p" -c 'import matplotlib' 2> /dev/null && { python="$p"; break; }
-done
-[ -n "$python" ] ||
-  { echo "SKIPPED: python3-matplotlib is not installed (scripts/install-deps.sh installs it)"; exit 77; }
+source "$(dirname "$0")/matplotlib_python.sh"  # $python, or skipped
 rm -rf "$work"; mkdir -p "$work"
 export PLANET_CACHE_DIR="$work/cache"
 source "$(dirname "$0")/expect_refusal.sh"  # expect(), failed=0

@@ -7,13 +7,7 @@
 # before any work. Exit 77 (skipped) without matplotlib or chromium.
 set -uo pipefail
 planet="$1"; work="$2"
-# The python that sees Debian's matplotlib (one of one's own on the PATH may not).
-python=""
-for p in python3 /usr/bin/python3; do
-  "$p" -c 'import matplotlib' 2> /dev/null && { python="$p"; break; }
-done
-[ -n "$python" ] ||
-  { echo "SKIPPED: python3-matplotlib is not installed (scripts/install-deps.sh installs it)"; exit 77; }
+source "$(dirname "$0")/matplotlib_python.sh"  # $python, or skipped
 browser=$(command -v chromium || command -v chromium-browser || true)
 [ -n "$browser" ] ||
   { echo "SKIPPED: chromium is not installed (scripts/install-deps.sh installs it)"; exit 77; }

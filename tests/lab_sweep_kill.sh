@@ -7,12 +7,7 @@
 # for each cell a killed run did not keep) and leaves no partial file.
 set -uo pipefail
 planet="$1"; work="$2"; kills="${3:-20}"
-python=""
-for p in python3 /usr/bin/python3; do
-  "$p" -c 'import matplotlib' 2> /dev/null && { python="$p"; break; }
-done
-[ -n "$python" ] ||
-  { echo "SKIPPED: python3-matplotlib is not installed (scripts/install-deps.sh installs it)"; exit 77; }
+source "$(dirname "$0")/matplotlib_python.sh"  # $python, or skipped
 rm -rf "$work"; mkdir -p "$work"
 failed=0
 fail() { echo "FAIL: $*"; failed=1; }
