@@ -9,7 +9,7 @@ planet="$1"; work="$2"; kills="${3:-20}"
 rm -rf "$work"; mkdir -p "$work"
 failed=0
 fail() { echo "FAIL: $*"; failed=1; }
-spp=20000,600,20000
+spp=8000,600,8000
 render() {  # CACHE: in the background, pid in $pid
   PLANET_CACHE_DIR="$work/$1" "$planet" reference --scene earth_sunset --width 4 --height 2 \
     --spp "$spp" --out "$work/$1/out.exr" --quiet > "$work/$1.txt" 2>&1 &
