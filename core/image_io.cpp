@@ -105,12 +105,27 @@ void check_image_signature(const std::filesystem::path& file, const std::string&
   }
 }
 
+void check_image_size(const std::filesystem::path& file, const std::string& what, long long width,
+                      long long height, long long channels) {
+  if (width < 1 || height < 1 || channels < 1) {
+    throw InputError(fmt::format("{}: {} with no pixels ({}x{}, {} channels)", file.string(), what,
+                                 width, height, channels));
+  }
+  if (width > kMaxImageValues || height > kMaxImageValues / width ||
+      channels > kMaxImageValues / (width * height)) {
+    throw InputError(fmt::format(
+        "{}: {} of {}x{} pixels and {} channels is larger than the {} values the program reads",
+        file.string(), what, width, height, channels, kMaxImageValues));
+  }
+}
+
 ImageRGB read_image_rgb(const std::filesystem::path& file) {
   check_image_signature(file, "an image of the program's");
   auto in = OIIO::ImageInput::open(file.string());
   if (!in)
     throw InputError(fmt::format("{}: cannot read image: {}", file.string(), OIIO::geterror()));
   const OIIO::ImageSpec& spec = in->spec();
+  check_image_size(file, "an image of the program's", spec.width, spec.height, spec.nchannels);
   if (spec.nchannels < 3) {
     throw InputError(
         fmt::format("{}: {} channels, need at least RGB", file.string(), spec.nchannels));

@@ -75,6 +75,17 @@ void write_png(const std::filesystem::path& file, int width, int height,
 // block; found by the height_map fuzz target).
 void check_image_signature(const std::filesystem::path& file, const std::string& what);
 
+// The most values (pixels times channels) an image read whole may hold:
+// 2^27, a 16384x8192 height map of one channel (512 MiB as floats).
+constexpr long long kMaxImageValues = 1LL << 27;
+
+// Refuses (InputError naming the file and `what` reads it) an image whose
+// header declares no pixels or more than kMaxImageValues, before anything
+// is allocated for it: a header of a few bytes can declare terabytes
+// (found by the height_map fuzz target).
+void check_image_size(const std::filesystem::path& file, const std::string& what, long long width,
+                      long long height, long long channels);
+
 ImageRGB read_image_rgb(const std::filesystem::path& file);
 
 }  // namespace planet

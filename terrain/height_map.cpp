@@ -22,6 +22,7 @@ HeightMap::HeightMap(const std::filesystem::path& file, double scale, double off
         fmt::format("{}: cannot read height map: {}", file.string(), OIIO::geterror()));
   }
   const OIIO::ImageSpec& spec = in->spec();
+  check_image_size(file, "a height map", spec.width, spec.height, spec.nchannels);
   width_ = spec.width;
   height_ = spec.height;
   if (width_ < 2 || height_ < 2 || spec.nchannels < 1) {

@@ -73,6 +73,20 @@ TEST(HeightMapTest, BadFilesGiveErrorsNamingTheFile) {
   auto tiny = temp_file("tiny.exr");
   write_map(tiny, 1, 1, {3});
   expect_error_naming(tiny, "a single pixel");
+  // A header of a few bytes that declares 16 x 8e30 pixels: refused before
+  // anything is allocated for them.
+  auto huge = temp_file("huge.pgm");
+  std::ofstream(huge, std::ios::binary) << "P5\n16 8000000000000000000000000000000\n255\n"
+                                        << std::string(64, '\xff');
+  expect_error_naming(huge, "a header that declares more pixels than the program reads");
+  try {
+    HeightMap map(huge, 1.0, 0.0);
+  } catch (const InputError& e) {
+    std::string what = e.what();
+    EXPECT_NE(what.find("16x2147483647 pixels and 1 channels is larger than the 134217728 values"),
+              std::string::npos)
+        << what;
+  }
 }
 
 TEST(TerrainConfigTest, ErrorsNameTheBodyFileAndField) {
