@@ -131,8 +131,9 @@ void run_reference(const ReferenceArgs& args) {
     return;
   }
   std::filesystem::path out(args.out);
-  OutputFolder folder(out.has_parent_path() ? out.parent_path() : ".", "--out");
-  remove_stale_partials(out.has_parent_path() ? out.parent_path() : ".");
+  const std::filesystem::path out_dir = out.has_parent_path() ? out.parent_path() : ".";
+  OutputFolder folder(out_dir, "--out");
+  remove_stale_partials(out_dir);
   std::filesystem::path cached = reference_cache_file(scene, model, budget, mode);
   bool was_cached = reference_cached(scene, budget, mode);
   if (!was_cached && !args.quiet) {
