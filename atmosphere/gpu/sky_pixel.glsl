@@ -3,11 +3,15 @@
 // reversed-Z depth with an infinite far plane: view depth = near / depth)
 // and the radiance that surface leaves, and the camera, lifted onto the
 // bottom sphere when it is a hair below it (the ground mesh is an
-// ellipsoid mapped onto the sphere, up to float rounding).
+// ellipsoid mapped onto the sphere, up to float rounding) or in a hollow
+// below it; where nothing was drawn, the ray then passes over the lifted
+// camera's horizon (lifted_horizon.glsl).
+#include "atmosphere/gpu/lifted_horizon.glsl"
+
 struct SkyPixel {
   float depth;      // reversed-Z; 0 where nothing opaque was drawn
   vec3 surface;     // radiance leaving the surface toward the camera; 0 without one
-  vec3 dir;         // unit view direction
+  vec3 dir;         // unit view direction (raised over the lifted horizon)
   float t_surface;  // distance to the surface along dir; 3e38 without one
   vec3 camera;      // lifted to at least 1 m above the bottom sphere
   float r_camera;   // the camera's distance from the centre before the lift
@@ -29,5 +33,6 @@ SkyPixel sky_pixel(Atmosphere atmosphere, sampler2D depth_texture, sampler2D sur
   if (p.r_camera < r_min) {
     p.camera = p.r_camera > 0.0 ? camera * (r_min / p.r_camera) : vec3(0, 0, r_min);
   }
+  if (p.depth == 0.0) p.dir = over_the_lifted_horizon(atmosphere, p.camera, p.r_camera, p.dir);
   return p;
 }

@@ -115,30 +115,7 @@ void main() {
   float t_surface = pixel.t_surface;
   vec3 camera = pixel.camera;
   const float kFar = 3.0e38;
-  float r_camera = pixel.r_camera;
-  float r_min = atmosphere.bottom_radius + 1.0;
 
-  // Lowlands and hollows put the camera below the bottom sphere, and it is
-  // lifted onto it. A ray that passes over every tile (depth 0) has cleared
-  // the terrain's horizon, but from the lifted camera it may still meet the
-  // sphere just below the sphere's horizon: a ground the terrain does not
-  // have, a dark band along the horizon. Such a ray is raised to just above
-  // the horizon, to the sky that lies beyond the terrain.
-  if (r_camera < r_min && depth == 0.0) {
-    vec3 up = camera / length(camera);
-    float mu_horizon = -safe_sqrt(1.0 - (atmosphere.bottom_radius / length(camera)) *
-                                            (atmosphere.bottom_radius / length(camera)));
-    float mu = dot(dir, up);
-    if (mu < mu_horizon + 1e-4) {
-      vec3 across = dir - mu * up;
-      float across_length = length(across);
-      vec3 horizontal = across_length > 1e-6 ? across / across_length
-                                             : normalize(cross(up, abs(up.x) < 0.9 ? vec3(1, 0, 0)
-                                                                              : vec3(0, 1, 0)));
-      float raised = mu_horizon + 1e-4;
-      dir = raised * up + safe_sqrt(1.0 - raised * raised) * horizontal;
-    }
-  }
   float t_ground_near, t_ground_far;
   bool hits_ground = ray_sphere(camera, dir, atmosphere.bottom_radius, t_ground_near,
                                 t_ground_far) && t_ground_near > 0.0;

@@ -6,6 +6,7 @@
 #include "atmosphere/shaders/atmosphere_block.glsl"
 #include "atmosphere/shaders/oneil_definitions.glsl"
 #include "atmosphere/shaders/oneil_functions.glsl"
+#include "atmosphere/gpu/lifted_horizon.glsl"
 
 uniform vec3 u_camera;  // atmosphere space, metres
 uniform mat3 u_ray_from_ndc;
@@ -93,6 +94,9 @@ OneilPixel oneil_pixel(Atmosphere atmosphere, vec2 frag_coord) {
   p.dir = ray / ray_scale;
   p.camera = oneil_camera(atmosphere);
   p.t_surface = surface_distance(p.pixel, ray_scale);
+  if (p.t_surface == kFar) {
+    p.dir = over_the_lifted_horizon(atmosphere, p.camera, length(u_camera), p.dir);
+  }
   p.hits_ground = ray_hits_ground(atmosphere, p.camera, p.dir, p.t_ground);
   return p;
 }

@@ -12,7 +12,11 @@ layout(location = 0) out vec4 o_radiance;
 
 void main() {
   Atmosphere atmosphere = block_atmosphere();
-  vec3 dir = normalize(ray_at_ndc(gl_FragCoord.xy / u_viewport * 2.0 - 1.0));
+  // A ray below a lifted camera's horizon is the sky just above it
+  // (lifted_horizon.glsl), phases included.
+  vec3 dir = over_the_lifted_horizon(
+      atmosphere, oneil_camera(atmosphere), length(u_camera),
+      normalize(ray_at_ndc(gl_FragCoord.xy / u_viewport * 2.0 - 1.0)));
   vec3 radiance = oneil_phased(atmosphere, v_rayleigh, v_mie, dir) +
                   v_transmittance * sun_disk_radiance(atmosphere, dot(dir, u_sun_dir));
   o_radiance = oneil_output(radiance);

@@ -35,10 +35,16 @@ void main() {
     dir = cos(elevation) * horizontal + sin(elevation) * u_up;
     // The lowest ring is drawn a little below the horizon, so that no
     // pixel between its chords and the horizon is left out; the pixels
-    // whose rays meet the ground are the grid's, and discarded here.
-    float drawn_elevation = ring == 0 ? elevation - 0.01 : elevation;
+    // whose rays meet the ground are the grid's, and discarded here. A
+    // camera lifted out of a hollow sees sky over the terrain's silhouette
+    // well below the sphere's horizon (those rays are raised onto it:
+    // lifted_horizon.glsl), and the ring is drawn down to near the nadir.
+    bool lifted = length(u_camera) < atmosphere.bottom_radius + 1.0;
+    float drop = lifted ? 0.5 * kPi - 0.05 - dip : 0.01;
+    float drawn_elevation = ring == 0 ? elevation - drop : elevation;
     drawn = cos(drawn_elevation) * horizontal + sin(drawn_elevation) * u_up;
     dir = normalize(dir + 1e-4 * u_up);
+    if (ring == 0) dir = over_the_lifted_horizon(atmosphere, camera, length(u_camera), dir);
   } else {
     // Angle from the nadir, from the planet's disk to the atmosphere's
     // limb, crowded toward both edges.

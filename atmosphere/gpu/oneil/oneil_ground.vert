@@ -36,6 +36,7 @@ void main() {
   vec3 dir = ray / ray_scale;
   vec3 camera = oneil_camera(atmosphere);
   float t_surface = surface_distance(pixel, ray_scale);
+  if (t_surface == kFar) dir = over_the_lifted_horizon(atmosphere, camera, length(u_camera), dir);
   float t_ground;
   bool ground = ray_hits_ground(atmosphere, camera, dir, t_ground);
   v_sky = t_surface == kFar && !ground ? 1.0 : 0.0;
