@@ -22,6 +22,13 @@ int main(int argc, char** argv) {
   // threads traced 1.03-1.13e5 paths/s with one arena, 0.96-1.12e5 with
   // eight (earth_sunset 8x4). MALLOC_ARENA_MAX in the environment wins.
   if (!std::getenv("MALLOC_ARENA_MAX")) mallopt(M_ARENA_MAX, 1);
+  // Blocks of 1 MiB and more (the driver's textures, images read back) are
+  // mapped and unmapped on their own. By default glibc raises that
+  // threshold to the largest block freed so far (up to 32 MiB), after which
+  // the Bruneton tables of a technique switch came from the heap and left
+  // it fragmented: the soak's peak wandered by 10 MiB from round to round.
+  // MALLOC_MMAP_THRESHOLD_ in the environment wins.
+  if (!std::getenv("MALLOC_MMAP_THRESHOLD_")) mallopt(M_MMAP_THRESHOLD, 1 << 20);
   std::unique_ptr<CLI::App> app = planet::apps::make_cli();
   return planet::apps::run_cli(*app, argc, argv);
 }
