@@ -28,6 +28,13 @@ Texture make_texture_3d(GLenum internal_format, int width, int height, int depth
   return Texture(id);
 }
 
+Texture make_texture_2d_multisample(GLenum internal_format, int samples, int width, int height) {
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_2D_MULTISAMPLE, 1, &id);
+  glTextureStorage2DMultisample(id, samples, internal_format, width, height, GL_TRUE);
+  return Texture(id);
+}
+
 Framebuffer make_framebuffer(GLuint color, GLuint depth, GLuint stencil) {
   GLuint fbo = 0;
   glCreateFramebuffers(1, &fbo);

@@ -51,6 +51,9 @@ using VertexArray = GlName<GlObjectKind::vertex_array, delete_vertex_array>;
 // Immutable 2D and 3D textures with linear filtering and clamped edges.
 Texture make_texture_2d(GLenum internal_format, int width, int height);
 Texture make_texture_3d(GLenum internal_format, int width, int height, int depth);
+// A multisampled 2D texture (fixed sample locations), for a pass that
+// resolves it itself.
+Texture make_texture_2d_multisample(GLenum internal_format, int samples, int width, int height);
 // A framebuffer of a colour texture and, unless 0, a depth texture and a
 // stencil texture; SystemError when GL finds it incomplete.
 Framebuffer make_framebuffer(GLuint color, GLuint depth, GLuint stencil = 0);

@@ -65,7 +65,10 @@ nlohmann::json sidecar(const FlightScript& script, const FlightPath& path, const
       {"sun_dir_body", {sun.x, sun.y, sun.z}},
       {"technique", technique},
       {"exposure", exposure},
-      {"image", {{"width", script.width}, {"height", script.height}}},
+      {"image",
+       {{"width", script.width},
+        {"height", script.height},
+        {"antialiasing", script.antialiasing}}},
       {"gpu_ms", passes},
       {"passes_reused", reused},
       {"terrain",
@@ -264,6 +267,7 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
   StagingFolder staging(options.out_dir);
 
   FrameRenderer renderer(script.width, script.height);
+  renderer.set_antialiasing(script.antialiasing);
   TerrainOptions terrain;
   terrain.pixel_budget = options.pixel_budget;
   terrain.cache_bytes = options.terrain_cache_bytes;
@@ -343,7 +347,10 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
       {"flight", script.file.string()},
       {"frames", {{"first", first}, {"end", end}, {"total_in_flight", total}}},
       {"frame_rate", script.frame_rate},
-      {"image", {{"width", script.width}, {"height", script.height}}},
+      {"image",
+       {{"width", script.width},
+        {"height", script.height},
+        {"antialiasing", script.antialiasing}}},
       {"technique", budget ? fmt::format("governor, budget {:g} %", *budget) : script.technique},
       {"wall_seconds", result.wall_seconds},
   };

@@ -54,6 +54,15 @@ class FrameRenderer {
   // values and the other radiance. The caller keeps `previous` alive.
   void set_fade(AtmosphereTechnique* previous, double weight);
 
+  // Anti-aliasing of the surfaces' edges: `samples` per pixel (1: none,
+  // the default, one ray through each pixel's centre as the path tracer
+  // traces it; capture and fly take 4). The surfaces are drawn
+  // multisampled and resolved to one surface per pixel with its coverage;
+  // after the atmosphere, a partly covered pixel takes the rest from the
+  // open sky beside it. SystemError for a count the GL cannot give.
+  void set_antialiasing(int samples);
+  int antialiasing() const { return samples_; }
+
   // Terrain settings, taken by the next set_body.
   void set_terrain_options(const TerrainOptions& options) { terrain_options_ = options; }
   // Wait up to this long for every terrain tile a frame needs, so that a
@@ -98,6 +107,13 @@ class FrameRenderer {
   // The frame's linear radiance: the atmosphere's target, or for an
   // airless body the surfaces' own.
   const Texture& radiance() const;
+  // With anti-aliasing: the multisampled surfaces into surface_ and depth_,
+  // timed as `pass`.
+  void resolve_surfaces(const char* pass);
+  // With anti-aliasing: the partly covered pixels of `target` (the
+  // radiance's framebuffer) take the rest from the open ones beside them,
+  // timed as `pass`.
+  void blend_surface_edges(GLuint target, const char* pass);
 
   int width_, height_;
   Texture depth_, surface_, hdr_, ldr_;
@@ -106,6 +122,12 @@ class FrameRenderer {
   Texture sky_stencil_;
   Framebuffer surface_fbo_, hdr_fbo_, ldr_fbo_;
   Program tonemap_program_;
+  // Anti-aliasing: the multisampled surfaces, resolved into surface_ and
+  // depth_ (made by set_antialiasing).
+  int samples_ = 1;
+  Texture surface_ms_, depth_ms_;
+  Framebuffer surface_ms_fbo_;
+  Program resolve_program_, edges_program_;
   Buffer atmosphere_block_;
   FullscreenPass tonemap_pass_;
   TerrainOptions terrain_options_;

@@ -72,6 +72,11 @@ FlightScript load_flight_script(const std::filesystem::path& file) {
   JsonObject image = root.object("image");
   s.width = image.integer("width", 1, 16384);
   s.height = image.integer("height", 1, 16384);
+  s.antialiasing = image.integer_or("antialiasing", 4, 1, 16);
+  if ((s.antialiasing & (s.antialiasing - 1)) != 0) {
+    image.fail("antialiasing",
+               fmt::format("{} samples a pixel: give 1 (none), 2, 4, 8 or 16", s.antialiasing));
+  }
   image.finish();
 
   s.frame_rate = root.number("frame_rate", 1e-3, 1000.0);

@@ -44,6 +44,9 @@ struct FlightScript {
   glm::dvec3 sun_dir_body{0, 0, 1};
   double sun_elevation = 0, sun_azimuth = 0;  // radians, as given
   int width = 0, height = 0;
+  // "image": {"antialiasing": N}: samples a pixel for the surfaces' edges
+  // (render/frame.h), 1 for none; 4 unless given.
+  int antialiasing = 4;
   double frame_rate = 0;
   double exposure = 1;  // multiplies radiance before tone mapping; the default for keyframes
   std::string technique = "hillaire";

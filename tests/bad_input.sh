@@ -13,6 +13,7 @@ expect "vulcan" "$planet" probe sun --planet vulcan --lat 0 --lon 0 --time 2026-
 expect "--lat: 91" "$planet" fly --lat 91
 expect "--height: -7e+06 m is below the ground" "$planet" fly --height -7e6
 expect "--technique: unknown atmosphere technique 'nope'" "$planet" fly --technique nope
+expect "--antialiasing: 3 samples a pixel: give 1 (none), 2, 4, 8 or 16" "$planet" fly --antialiasing 3
 expect "hillaire has no quality parameter 'foo' (its parameters: sky_view_steps," \
   "$planet" fly --technique hillaire:foo=1
 expect "raymarch: view_steps=0 is outside 1 to 512" "$planet" fly --technique raymarch:view_steps=0

@@ -47,6 +47,10 @@ FlySession::FlySession(const FlyArgs& args, GLFWwindow* window, FlyInput& input,
                                                           : std::filesystem::path(args.error_model));
   renderer_ = std::make_unique<FrameRenderer>(std::max(1, int(args.width * args.render_scale)),
                                               std::max(1, int(args.height * args.render_scale)));
+  const bool software =
+      std::string(reinterpret_cast<const char*>(glGetString(GL_RENDERER))).find("llvmpipe") !=
+      std::string::npos;
+  renderer_->set_antialiasing(args.antialiasing > 0 ? args.antialiasing : software ? 1 : 4);
   ldr_framebuffer_ = make_framebuffer(renderer_->ldr_texture(), 0);
   // A window never waits for tiles: it draws parents while children load.
   renderer_->set_terrain_wait(0.0);

@@ -119,6 +119,16 @@ TEST_F(FlightScriptTest, ZeroImageSize) {
                {"image.width", "out of range"});
 }
 
+TEST_F(FlightScriptTest, AntialiasingIsFourUnlessGivenAndAPowerOfTwo) {
+  EXPECT_EQ(load_flight_script(write("ok.json", script())).antialiasing, 4);
+  auto with = [&](const char* value) {
+    return script("\"height\": 32", std::string("\"height\": 32, \"antialiasing\": ") + value);
+  };
+  EXPECT_EQ(load_flight_script(write("one.json", with("1"))).antialiasing, 1);
+  expect_error(write("bad.json", with("3")), {"bad.json", "image.antialiasing", "3 samples", "2, 4, 8"});
+  expect_error(write("bad2.json", with("32")), {"image.antialiasing", "out of range"});
+}
+
 TEST_F(FlightScriptTest, OutOfRangeLatitudeAndMissingField) {
   expect_error(write("bad.json", script("\"lat_deg\": 11", "\"lat_deg\": 91")),
                {"keyframes[2].lat_deg", "91", "out of range"});
