@@ -1,5 +1,7 @@
 #include "terrain/surface_color.h"
 
+#include "terrain/noise.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -12,11 +14,37 @@ double smoothstep(double e0, double e1, double x) {
 }
 }  // namespace
 
+double albedo_variation(const std::vector<AlbedoVariation>& variation,
+                        const glm::dvec3& position, double spacing) {
+  double factor = 1.0;
+  for (const AlbedoVariation& v : variation) {
+    double sum = 0.0, amplitude = 1.0, norm = 0.0, wavelength = v.wavelength;
+    for (int octave = 0; octave < v.octaves; ++octave) {
+      // The whole series' norm, so that a coarse sample sums less detail,
+      // not louder coarse octaves.
+      norm += amplitude;
+      double kept = smoothstep(2.0 * spacing, 4.0 * spacing, wavelength);
+      if (kept > 0.0) {
+        sum += kept * amplitude *
+               gradient_noise(position / wavelength, v.seed + uint32_t(octave));
+      }
+      amplitude *= v.gain;
+      wavelength *= 0.5;
+    }
+    // Gradient noise rarely leaves [-0.7, 0.7]: stretched toward [-1, 1].
+    factor *= 1.0 + v.amplitude * std::clamp(1.4 * sum / norm, -1.0, 1.0);
+  }
+  return std::clamp(factor, 0.05, 2.0);
+}
+
 glm::vec3 surface_albedo(const SurfacePalette& p, double height, double slope, double latitude,
-                         bool at_sea) {
+                         bool at_sea, const glm::dvec3& position, double spacing) {
   if (at_sea && p.ocean) return *p.ocean;
   glm::vec3 c = glm::mix(p.low, p.high, float(smoothstep(p.low_height, p.high_height, height)));
   c = glm::mix(c, p.steep, float(smoothstep(0.5 * p.steep_slope, p.steep_slope, slope)));
+  if (!p.variation.empty()) {
+    c = glm::min(c * float(albedo_variation(p.variation, position, spacing)), glm::vec3(1.0f));
+  }
   if (p.snow) {
     // The snow line falls with |latitude| as cos^2, and snow slides off
     // steep slopes, where rock shows through.

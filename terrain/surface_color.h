@@ -4,9 +4,24 @@
 // or ice above a snow line that falls toward the poles, and ocean).
 #include <glm/glm.hpp>
 
+#include <cstdint>
 #include <optional>
+#include <vector>
 
 namespace planet {
+
+// Brightness that varies over the ground whatever its height: fBm of
+// gradient noise from `wavelength` down through `octaves` halvings
+// (amplitudes falling by `gain`), which scales the albedo by 1 +
+// amplitude * noise. Mars's bright and dark provinces at 1000 km, the
+// streaks and patches of dust at a few km, regolith to the metre.
+struct AlbedoVariation {
+  double wavelength = 1e6;  // metres
+  int octaves = 4;
+  double gain = 0.5;
+  double amplitude = 0.2;   // of the fBm, which stays within about [-1, 1]
+  uint32_t seed = 0;
+};
 
 struct SurfacePalette {
   glm::vec3 low{0.25f, 0.22f, 0.18f};
@@ -19,11 +34,22 @@ struct SurfacePalette {
   double snow_line_equator = 5000; // metres above which snow lies at the equator
   double snow_line_pole = 0;       // ... and at the poles
   double steep_slope = 0.6;        // 1 - cos(angle to the vertical) at which rock shows fully
+  std::vector<AlbedoVariation> variation;  // applied in turn to land (not to sea or snow)
 };
 
 // `slope`: 1 - dot(normal, up). `latitude`: radians. `at_sea`: the point
-// is open sea (at sea level).
+// is open sea (at sea level). `position`: the point in the body frame,
+// metres, where the variation's noise is sampled; `spacing`: the distance
+// to the next sample (a tile's vertex), below twice which no octave of the
+// variation is summed (sampled more coarsely, the finer octaves alias into
+// specks on distant ground).
 glm::vec3 surface_albedo(const SurfacePalette& palette, double height, double slope,
-                         double latitude, bool at_sea);
+                         double latitude, bool at_sea, const glm::dvec3& position,
+                         double spacing);
+
+// The factor `variation` scales the albedo by at `position`, within
+// [0.05, 2]: octaves fade out from a wavelength of 4 `spacing` to 2.
+double albedo_variation(const std::vector<AlbedoVariation>& variation,
+                        const glm::dvec3& position, double spacing);
 
 }  // namespace planet

@@ -105,6 +105,18 @@ TerrainConfig parse_terrain(const Body& body) {
     p.snow_line_equator = a.number_or("snow_line_equator_m", p.snow_line_equator, -1e5, 1e5);
     p.snow_line_pole = a.number_or("snow_line_pole_m", p.snow_line_pole, -1e5, 1e5);
     p.steep_slope = a.number_or("steep_slope", p.steep_slope, 0.01, 1.0);
+    if (a.has("variation")) {
+      for (JsonObject v : a.objects("variation")) {
+        AlbedoVariation layer;
+        layer.wavelength = v.number("wavelength_m", 0.1, 1e8);
+        layer.octaves = v.integer("octaves", 1, 24);
+        layer.gain = v.number_or("gain", layer.gain, 0.0, 1.0);
+        layer.amplitude = v.number("amplitude", 0.0, 0.95);
+        layer.seed = uint32_t(v.integer_or("seed", 0, 0, 1 << 30));
+        v.finish();
+        p.variation.push_back(layer);
+      }
+    }
     a.finish();
   }
   root.finish();

@@ -61,7 +61,8 @@ TileMesh build_tile(const TerrainSurface& surface, const TileKey& key) {
       double height = height_at(i, j);
       bool at_sea = config.sea_level && height <= *config.sea_level + 1e-3;
       glm::vec3 albedo = surface_albedo(config.palette, height, 1.0 - glm::dot(normal, up),
-                                        std::asin(std::clamp(up.z, -1.0, 1.0)), at_sea);
+                                        std::asin(std::clamp(up.z, -1.0, 1.0)), at_sea, x,
+                                        glm::length(at(i + 1, j) - x));
       tile.vertices[size_t(j * N + i)] = {glm::vec3(x - tile.center_body), glm::vec3(target - x),
                                           glm::vec3(normal), pack_albedo(albedo)};
       tile.heights.min = std::min(tile.heights.min, height);
