@@ -161,6 +161,7 @@ void FrameRenderer::blend_surface_edges(GLuint target, const char* pass) {
   glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
   glBindTextureUnit(0, radiance().id());
   glBindTextureUnit(1, surface_.id());
+  glUniform1i(edges_program_.uniform("u_open_is_black"), target == surface_fbo_.id() ? 1 : 0);
   tonemap_pass_.draw();
   glDisable(GL_BLEND);
   timer_.end();

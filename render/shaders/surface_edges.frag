@@ -16,6 +16,10 @@ in vec2 v_ndc;
 layout(location = 0) out vec4 o_color;
 layout(binding = 0) uniform sampler2D u_radiance;
 layout(binding = 1) uniform sampler2D u_surface;
+// 1 for an airless body, whose surfaces are the image: what no surface
+// covers is black space, and a partly covered pixel is its coverage times
+// the covered samples' mean.
+uniform int u_open_is_black;
 
 const float kSteepest = 1.25;
 
@@ -25,6 +29,10 @@ void main() {
   ivec2 pixel = ivec2(gl_FragCoord.xy);
   float coverage = texelFetch(u_surface, pixel, 0).a;
   if (coverage <= 0.0 || coverage >= 1.0) discard;
+  if (u_open_is_black != 0) {
+    o_color = vec4(0.0, 0.0, 0.0, 1.0 - coverage);
+    return;
+  }
   // The kind the pixel was not shaded as: open (0) or covered (1).
   float other = coverage >= 0.5 ? 0.0 : 1.0;
   ivec2 last = textureSize(u_surface, 0) - 1;
