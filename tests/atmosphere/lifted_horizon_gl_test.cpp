@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -96,6 +97,11 @@ TEST(LiftedHorizonGLTest, NoLineWhereTheGroundMeetsTheAirOverTheLowestGround) {
   std::vector<Lowland> lowlands = {
       {"mars", {glm::radians(18.65), glm::radians(-134.8), -747.912}, {0, 90, 180, 270}}};
   for (const char* name : {"mars", "asteroid"}) lowlands.push_back(open_lowland(name));
+  // Pixels below the lifted horizon seen on each body: there must be some,
+  // or the test shows nothing. (The searched places hold few or many of
+  // them by a metre of relief: 7 pixels at Mars's -2418 m in one build, 0
+  // at its -2173 m in a clang build.)
+  std::map<std::string, int> raised_on;
   for (const Lowland& lowland : lowlands) {
     Body body = load_body(data_dir() / "planets" / (std::string(lowland.body) + ".json"));
     AtmosphereModel model = load_atmosphere(body);
@@ -148,13 +154,15 @@ TEST(LiftedHorizonGLTest, NoLineWhereTheGroundMeetsTheAirOverTheLowestGround) {
           }
         }
       }
-      // The view must hold such pixels, or the test shows nothing.
-      EXPECT_GT(raised, 0) << technique << " over " << lowland.body;
+      raised_on[lowland.body] += raised;
       std::printf("%-20s %-8s at %6.2f, %7.2f deg, %7.1f m: %3d pixels below the lifted horizon, worst %.2f %% "
                   "off the sky above\n",
                   technique.c_str(), lowland.body, glm::degrees(lowland.place.lat),
                   glm::degrees(lowland.place.lon), lowland.place.height, raised, 100.0 * worst);
     }
+  }
+  for (const char* body : {"mars", "asteroid"}) {
+    EXPECT_GT(raised_on[body], 0) << body << ": no view looked below the lifted horizon";
   }
 }
 
