@@ -162,12 +162,12 @@ CageHeight::CageHeight(const ObjCage& cage, const std::string& name, double body
         u_lo = std::min(u_lo, u), u_hi = std::max(u_hi, u);
         v_lo = std::min(v_lo, v), v_hi = std::max(v_hi, v);
       }
-      auto first = [](double x) {
-        return std::max(0, int(std::ceil((x + 1.0) * kN / 2.0 - 1e-6)));
-      };
-      auto end = [](double x) {
-        return std::min(kN, int(std::floor((x + 1.0) * kN / 2.0 + 1e-6)));
-      };
+      // A triangle that grazes the face's plane projects to coordinates of
+      // any size (1e18 for the cube's limit): clamped to the grid before
+      // they become ints, which cannot hold them (UBSan's finding).
+      auto grid = [](double x) { return std::clamp((x + 1.0) * kN / 2.0, -1.0, kN + 1.0); };
+      auto first = [&](double x) { return std::max(0, int(std::ceil(grid(x) - 1e-6))); };
+      auto end = [&](double x) { return std::min(kN, int(std::floor(grid(x) + 1e-6))); };
       glm::dvec3 e1 = p1 - p0, e2 = p2 - p0;
       for (int j = first(v_lo); j <= end(v_hi); ++j) {
         for (int i = first(u_lo); i <= end(u_hi); ++i) {
