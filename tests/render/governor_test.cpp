@@ -10,6 +10,8 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -188,8 +190,13 @@ class GovernorFileTest : public ::testing::Test {
     return file;
   }
   void SetUp() override {
+    // One folder per process and test: ctest runs this fixture's tests in
+    // processes side by side, and gtest's random seed (the folder's name
+    // before) came from the clock's milliseconds, the same in both; one
+    // test's TearDown then removed the folder the other was writing.
     dir_ = std::filesystem::temp_directory_path() /
-           ("governor_test_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()));
+           ("governor_test_" + std::to_string(::getpid()) + "_" +
+            ::testing::UnitTest::GetInstance()->current_test_info()->name());
     std::filesystem::create_directories(dir_);
   }
   void TearDown() override { std::filesystem::remove_all(dir_); }
