@@ -68,7 +68,8 @@ nlohmann::json sidecar(const FlightScript& script, const FlightPath& path, const
       {"image",
        {{"width", script.width},
         {"height", script.height},
-        {"antialiasing", script.antialiasing}}},
+        {"antialiasing", script.antialiasing},
+        {"terrain_shadows", script.terrain_shadows}}},
       {"gpu_ms", passes},
       {"passes_reused", reused},
       {"terrain",
@@ -268,6 +269,7 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
 
   FrameRenderer renderer(script.width, script.height);
   renderer.set_antialiasing(script.antialiasing);
+  renderer.set_terrain_shadows(script.terrain_shadows);
   TerrainOptions terrain;
   terrain.pixel_budget = options.pixel_budget;
   terrain.cache_bytes = options.terrain_cache_bytes;
@@ -350,7 +352,8 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
       {"image",
        {{"width", script.width},
         {"height", script.height},
-        {"antialiasing", script.antialiasing}}},
+        {"antialiasing", script.antialiasing},
+        {"terrain_shadows", script.terrain_shadows}}},
       {"technique", budget ? fmt::format("governor, budget {:g} %", *budget) : script.technique},
       {"wall_seconds", result.wall_seconds},
   };

@@ -128,7 +128,9 @@ void FrameRenderer::draw_surfaces(const Camera& camera, const glm::dvec3& sun_di
     lighting.solar_irradiance = glm::vec3(atmosphere_->solar_irradiance);
     if (technique) lighting.sky_irradiance = technique->ground_irradiance();
     lighting.sky_light = surface_sky_light_;
+    lighting.sun_angular_radius = atmosphere_->sun_angular_radius;
   }
+  lighting.shadows = terrain_shadows_;
   // Bound even for an airless body (then all zero): the block is declared.
   glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, atmosphere_block_.id());
   terrain_stats_ = terrain_->draw(camera, width_, height_, lighting);

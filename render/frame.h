@@ -80,6 +80,9 @@ class FrameRenderer {
   // scattering alone, the frame is the first order, as `reference
   // --max-order 1` traces it.
   void set_surface_sky_light(bool on) { surface_sky_light_ = on; }
+  // False: the terrain casts no shadow from the sun (the default is on).
+  void set_terrain_shadows(bool on) { terrain_shadows_ = on; }
+  bool terrain_shadows() const { return terrain_shadows_; }
 
   // False: the frame tells the technique nothing that would let it leave
   // a pass or a pixel out (no surface distance, no screen bound of the
@@ -135,6 +138,7 @@ class FrameRenderer {
   TerrainStats terrain_stats_;
   double terrain_wait_s_ = 300.0;
   bool surface_sky_light_ = true;
+  bool terrain_shadows_ = true;
   bool view_pruning_ = true;
 
   Body body_;

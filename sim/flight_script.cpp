@@ -77,6 +77,7 @@ FlightScript load_flight_script(const std::filesystem::path& file) {
     image.fail("antialiasing",
                fmt::format("{} samples a pixel: give 1 (none), 2, 4, 8 or 16", s.antialiasing));
   }
+  s.terrain_shadows = image.boolean_or("terrain_shadows", true);
   image.finish();
 
   s.frame_rate = root.number("frame_rate", 1e-3, 1000.0);

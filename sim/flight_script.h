@@ -47,6 +47,9 @@ struct FlightScript {
   // "image": {"antialiasing": N}: samples a pixel for the surfaces' edges
   // (render/frame.h), 1 for none; 4 unless given.
   int antialiasing = 4;
+  // "image": {"terrain_shadows": false}: the terrain casts no shadow from
+  // the sun (terrain/horizon.h); on unless given.
+  bool terrain_shadows = true;
   double frame_rate = 0;
   double exposure = 1;  // multiplies radiance before tone mapping; the default for keyframes
   std::string technique = "hillaire";

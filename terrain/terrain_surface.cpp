@@ -1,6 +1,7 @@
 #include "terrain/terrain_surface.h"
 
 #include "terrain/cube_sphere.h"
+#include "terrain/horizon.h"
 
 #include <fmt/format.h>
 #include <glm/gtc/constants.hpp>
@@ -12,7 +13,7 @@ namespace planet {
 std::string TileKey::name() const { return fmt::format("{}/{}/{}/{}", face, level, x, y); }
 
 TerrainSurface::TerrainSurface(const Ellipsoid& shape, TerrainConfig config)
-    : shape_(shape), config_(std::move(config)) {
+    : shape_(shape), config_(std::move(config)), horizon_memo_(std::make_shared<HorizonMemo>()) {
   // The tangent warp makes a face's cells nearly equal: the largest is
   // 1.19 times the mean in length (1.41 in area), and a face edge spans a
   // quarter of the equator.

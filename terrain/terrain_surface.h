@@ -9,9 +9,12 @@
 
 #include <glm/glm.hpp>
 
+#include <memory>
 #include <vector>
 
 namespace planet {
+
+class HorizonMemo;
 
 // Vertices per tile edge: 32 x 32 quads.
 constexpr int kTileGrid = 33;
@@ -52,11 +55,15 @@ class TerrainSurface {
   // The lowest the ground comes to the centre anywhere: culling's occluder.
   double occluder_radius() const;
   double max_radius() const;
+  // Tiles' far horizons kept for their children's builds (terrain/horizon.h);
+  // copies of the surface share it.
+  HorizonMemo& horizon_memo() const { return *horizon_memo_; }
 
  private:
   Ellipsoid shape_;
   TerrainConfig config_;
   std::vector<double> spacing_, error_;
+  std::shared_ptr<HorizonMemo> horizon_memo_;
 };
 
 }  // namespace planet

@@ -26,20 +26,20 @@ TileMesh build_tile(const TerrainSurface& surface, const TileKey& key) {
   tile.center_body =
       ellipsoid_point(surface.shape(), cube_to_sphere(key.face, s0 + 0.5 * key.size(),
                                                       t0 + 0.5 * key.size()));
-  // The grid with one more ring around it, so that every vertex's normal
-  // comes from central differences of its neighbours. The face parameter
-  // runs on past the face's edge there; the tangent warp is smooth across.
-  constexpr int M = N + 2;
-  std::vector<glm::dvec3> p(M * M);
-  std::vector<double> h(M * M);
-  for (int j = 0; j < M; ++j) {
-    for (int i = 0; i < M; ++i) {
-      p[j * M + i] = surface.face_point(key.face, s0 + step * (i - 1), t0 + step * (j - 1),
-                                        &h[j * M + i]);
-    }
-  }
-  auto at = [&](int i, int j) -> const glm::dvec3& { return p[(j + 1) * M + (i + 1)]; };
-  auto height_at = [&](int i, int j) { return h[(j + 1) * M + (i + 1)]; };
+  // The grid with a border around it: every vertex's normal comes from
+  // central differences of its neighbours, and its horizon from the
+  // border's reach.
+  const BorderedGrid grid = sample_grid(surface, key);
+  auto at = [&](int i, int j) -> const glm::dvec3& { return grid.at(i, j); };
+  auto height_at = [&](int i, int j) { return grid.height(i, j); };
+  std::shared_ptr<const HorizonField> parent_far;
+  if (key.level > 0) parent_far = surface.horizon_memo().far(surface, key.parent());
+  TileHorizons horizons = compute_horizons(grid, key, parent_far.get());
+  surface.horizon_memo().keep(key, std::make_shared<const HorizonField>(std::move(horizons.far)));
+  tile.axis_i = glm::vec3(glm::normalize(cube_to_sphere(key.face, s0 + key.size(), t0 + 0.5 * key.size()) -
+                                         cube_to_sphere(key.face, s0, t0 + 0.5 * key.size())));
+  tile.axis_j = glm::vec3(glm::normalize(cube_to_sphere(key.face, s0 + 0.5 * key.size(), t0 + key.size()) -
+                                         cube_to_sphere(key.face, s0 + 0.5 * key.size(), t0)));
 
   const auto& config = surface.config();
   tile.vertices.resize(kTileVertexCount);
@@ -63,8 +63,12 @@ TileMesh build_tile(const TerrainSurface& surface, const TileKey& key) {
       glm::vec3 albedo = surface_albedo(config.palette, height, 1.0 - glm::dot(normal, up),
                                         std::asin(std::clamp(up.z, -1.0, 1.0)), at_sea, x,
                                         glm::length(at(i + 1, j) - x));
-      tile.vertices[size_t(j * N + i)] = {glm::vec3(x - tile.center_body), glm::vec3(target - x),
-                                          glm::vec3(normal), pack_albedo(albedo)};
+      TileVertex& v = tile.vertices[size_t(j * N + i)];
+      v = {glm::vec3(x - tile.center_body), glm::vec3(target - x), glm::vec3(normal),
+           pack_albedo(albedo), {}};
+      for (int k = 0; k < kHorizonDirections; ++k) {
+        v.horizon[k] = encode_horizon(horizons.seen[size_t((j * N + i) * kHorizonDirections + k)]);
+      }
       tile.heights.min = std::min(tile.heights.min, height);
       tile.heights.max = std::max(tile.heights.max, height);
     }

@@ -5,6 +5,7 @@
 // into its parent (CDLOD, Strugar 2010): odd grid vertices slide onto the
 // parent's triangle edges, so a tile at the far end of its range looks
 // exactly like its parent and the switch between them does not pop.
+#include "terrain/horizon.h"
 #include "terrain/terrain_surface.h"
 
 #include <cstdint>
@@ -17,8 +18,12 @@ struct TileVertex {
   glm::vec3 morph_delta;  // parent-grid position - position
   glm::vec3 normal;       // unit, body frame
   uint32_t albedo;        // sRGB-free linear albedo, RGBA8 (alpha unused)
+  // The horizon's elevation in each of kHorizonDirections directions along
+  // the tile's grid (encode_horizon): where the sun is below it, the
+  // vertex is in a shadow.
+  uint8_t horizon[kHorizonDirections];
 };
-static_assert(sizeof(TileVertex) == 40);
+static_assert(sizeof(TileVertex) == 48);
 
 // Vertices: the grid row by row, then skirts (bottom, top, left, right
 // edges, kTileGrid each).
@@ -27,6 +32,9 @@ constexpr int kTileVertexCount = kTileGrid * kTileGrid + 4 * kTileGrid;
 struct TileMesh {
   TileKey key;
   glm::dvec3 center_body{0.0};
+  // Unit body-frame directions of the grid's i and j at the tile's centre:
+  // the frame its vertices' horizon directions are measured in.
+  glm::vec3 axis_i{1, 0, 0}, axis_j{0, 1, 0};
   std::vector<TileVertex> vertices;
   HeightRange heights;  // of the grid vertices
   // The largest distance, over the midpoints of the tile's triangle edges,

@@ -10,8 +10,10 @@
 #include "terrain/tile_mesh.h"
 
 #include <benchmark/benchmark.h>
+
 #include <glm/gtc/constants.hpp>
 
+#include <chrono>
 #include <unordered_map>
 
 namespace planet {
@@ -81,22 +83,49 @@ BENCHMARK_CAPTURE(BM_TerrainTileBuild, earth, "earth")->Unit(benchmark::kMillise
 BENCHMARK_CAPTURE(BM_TerrainTileBuild, mars, "mars")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_TerrainTileBuild, asteroid, "asteroid")->Unit(benchmark::kMillisecond);
 
+// The part of a tile build that is the shadows' own: sampling the grid's
+// border and marching its horizons (the parent's far horizon kept, as a
+// cache's build finds it).
+void BM_TerrainHorizons(benchmark::State& state, const char* name) {
+  Body body = load_body(data_dir() / "planets" / (std::string(name) + ".json"));
+  TerrainSurface surface(body.shape, parse_terrain(body));
+  const TileKey key{2, 12, 1000, 2000};
+  auto parent = surface.horizon_memo().far(surface, key.parent());
+  const BorderedGrid grid = sample_grid(surface, key);
+  double march_s = 0;
+  for (auto _ : state) {
+    auto start = std::chrono::steady_clock::now();
+    TileHorizons h = compute_horizons(grid, key, parent.get());
+    march_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    benchmark::DoNotOptimize(h);
+    benchmark::DoNotOptimize(sample_grid(surface, key));
+  }
+  const double n = double(state.iterations());
+  state.counters["march_ms"] = 1e3 * march_s / n;
+  state.counters["grid_points"] = double(BorderedGrid::kSide * BorderedGrid::kSide);
+}
+BENCHMARK_CAPTURE(BM_TerrainHorizons, earth, "earth")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_TerrainHorizons, mars, "mars")->Unit(benchmark::kMillisecond);
+
 // A frame over Earth from range(0) metres, with range(1) samples a pixel
-// of anti-aliasing (1: none); every pass's wall time with the GL idle
-// around it: the surfaces (multisampled), the anti-aliasing's own passes
-// (the resolve and the edges), and the whole frame.
+// of anti-aliasing (1: none) and the terrain's shadows when range(2) is 1;
+// every pass's wall time with the GL idle around it: the surfaces
+// (multisampled), the anti-aliasing's own passes (the resolve and the
+// edges), and the whole frame. The sun stands 8 degrees high, where
+// shadows are long.
 void BM_TerrainFrame(benchmark::State& state) {
   auto context = GlContext::create_headless();
   Body body = earth();
   AtmosphereModel model = load_atmosphere(body);
   FrameRenderer renderer(1280, 720);
   renderer.set_antialiasing(int(state.range(1)));
+  renderer.set_terrain_shadows(state.range(2) != 0);
   renderer.set_synchronous_timing(true);
   renderer.set_body(body, model, make_technique("raymarch"));
   Camera camera = camera_above(body, renderer.terrain()->surface(), double(state.range(0)));
   Geodesy geodesy(body.shape);
   glm::dvec3 sun = geodesy.body_from_enu(geodesy.geodetic_from_body(camera.pos_body)) *
-                   glm::normalize(glm::dvec3(0.3, -0.5, 0.6));
+                   glm::normalize(glm::dvec3(0.3, -0.95, 0.14));
   renderer.set_terrain_wait(300.0);
   renderer.render(camera, sun, 8.0);  // builds the tiles, pays for shader compilation
   renderer.set_terrain_wait(0.0);
@@ -118,7 +147,7 @@ void BM_TerrainFrame(benchmark::State& state) {
   state.counters["triangles"] = double(renderer.terrain_stats().triangles);
 }
 BENCHMARK(BM_TerrainFrame)
-    ->ArgsProduct({{2, 10000, 400000}, {1, 4}})
+    ->ArgsProduct({{2, 10000, 400000}, {1, 4}, {0, 1}})
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(3);

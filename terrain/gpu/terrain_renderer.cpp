@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
@@ -47,6 +48,8 @@ TerrainRenderer::TerrainRenderer(const Body& body, const TerrainOptions& options
   attrib(1, 3, GL_FLOAT, GL_FALSE, offsetof(TileVertex, morph_delta));
   attrib(2, 3, GL_FLOAT, GL_FALSE, offsetof(TileVertex, normal));
   attrib(3, 4, GL_UNSIGNED_BYTE, GL_TRUE, offsetof(TileVertex, albedo));
+  attrib(4, 4, GL_UNSIGNED_BYTE, GL_TRUE, offsetof(TileVertex, horizon));
+  attrib(5, 4, GL_UNSIGNED_BYTE, GL_TRUE, offsetof(TileVertex, horizon) + 4);
   vao_ = VertexArray(vao);
   check_gl_errors("TerrainRenderer setup");
 }
@@ -103,6 +106,11 @@ TerrainStats TerrainRenderer::draw(const Camera& camera, int width, int height,
   glUniform1i(program_.uniform("u_sky_light"), sky_light);
   if (lighting.sky_irradiance != 0) glBindTextureUnit(kSkyIrradianceUnit, lighting.sky_irradiance);
   glUniform3fv(program_.uniform("u_sun_irradiance"), 1, glm::value_ptr(lighting.solar_irradiance));
+  glUniform1i(program_.uniform("u_shadows"), lighting.shadows ? 1 : 0);
+  // The shadow's edge: the sun's disc, widened to the horizon coding's
+  // step near level (0.1 degree) so that it does not band.
+  glUniform1f(program_.uniform("u_penumbra"),
+              float(std::max(lighting.sun_angular_radius, 0.0025)));
   if (lighting.has_atmosphere) {
     glm::dvec3 scale = lighting.atmo_scale;
     glUniform3fv(program_.uniform("u_atmo_scale"), 1, glm::value_ptr(glm::vec3(scale)));
@@ -115,6 +123,9 @@ TerrainStats TerrainRenderer::draw(const Camera& camera, int width, int height,
   glDisable(GL_CULL_FACE);  // skirts are seen from both sides
   const GLint center_loc = program_.uniform("u_center_rel_eye");
   const GLint morph_loc = program_.uniform("u_morph_range");
+  const GLint center_body_loc = program_.uniform("u_center_body");
+  const GLint axis_i_loc = program_.uniform("u_axis_i");
+  const GLint axis_j_loc = program_.uniform("u_axis_j");
   const auto index_count = GLsizei(tile_indices().size());
   for (const SelectedTile& t : sel.tiles) {
     auto it = gpu_tiles_.find(t.key);
@@ -124,7 +135,8 @@ TerrainStats TerrainRenderer::draw(const Camera& camera, int width, int height,
       // A tile leaves the GPU only with the cache, so a tile not on the GPU
       // still has its vertices.
       if (mesh->vertices.empty()) throw std::logic_error("terrain: a tile lost its vertices");
-      GpuTile g{make_buffer(mesh->bytes(), mesh->vertices.data(), 0), mesh->center_body};
+      GpuTile g{make_buffer(mesh->bytes(), mesh->vertices.data(), 0), mesh->center_body,
+                mesh->axis_i, mesh->axis_j};
       it = gpu_tiles_.emplace(t.key, std::move(g)).first;
       // One copy is enough: the GPU's.
       cache_->release_vertices(t.key);
@@ -135,6 +147,9 @@ TerrainStats TerrainRenderer::draw(const Camera& camera, int width, int height,
     glm::vec3 center_rel_eye(it->second.center_body - camera.pos_body);
     glUniform3fv(center_loc, 1, glm::value_ptr(center_rel_eye));
     glUniform2f(morph_loc, float(t.morph_start), float(t.morph_end));
+    glUniform3fv(center_body_loc, 1, glm::value_ptr(glm::vec3(it->second.center_body)));
+    glUniform3fv(axis_i_loc, 1, glm::value_ptr(it->second.axis_i));
+    glUniform3fv(axis_j_loc, 1, glm::value_ptr(it->second.axis_j));
     glVertexArrayVertexBuffer(vao_.id(), 0, it->second.vertices.id(), 0, sizeof(TileVertex));
     glDrawElements(GL_TRIANGLES, index_count, GL_UNSIGNED_SHORT, nullptr);
     ++stats.tiles_drawn;

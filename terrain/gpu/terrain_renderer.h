@@ -51,6 +51,10 @@ struct TerrainLighting {
   // False: the ground is lit by the sun alone, as in single scattering
   // (the sky's light on it is the second order).
   bool sky_light = true;
+  // The terrain's shadows from the sun (its horizons, terrain/horizon.h),
+  // and the sun's angular radius, which softens their edges.
+  bool shadows = true;
+  double sun_angular_radius = 0.00465;
 };
 
 class TerrainRenderer {
@@ -76,6 +80,7 @@ class TerrainRenderer {
   struct GpuTile {
     Buffer vertices;
     glm::dvec3 center_body;
+    glm::vec3 axis_i, axis_j;  // TileMesh's
   };
 
   TerrainOptions options_;

@@ -8,8 +8,15 @@ layout(location = 0) in vec3 a_offset;
 layout(location = 1) in vec3 a_morph_delta;
 layout(location = 2) in vec3 a_normal;
 layout(location = 3) in vec4 a_albedo;
+layout(location = 4) in vec4 a_horizon_0123;  // encoded horizon angles, directions 0 to 3
+layout(location = 5) in vec4 a_horizon_4567;  // and 4 to 7
 
 uniform vec3 u_center_rel_eye;
+uniform vec3 u_center_body;  // the tile's centre in float: enough for a vertex's up
+uniform vec3 u_axis_i;       // the tile's grid directions at its centre, body frame
+uniform vec3 u_axis_j;
+uniform vec3 u_sun_dir_body;
+uniform int u_shadows;  // 0: the horizon hides no sun
 uniform mat3 u_view_from_body;
 uniform mat4 u_clip_from_view;
 uniform vec2 u_morph_range;  // eye distances where morphing to the parent starts and ends
@@ -24,6 +31,34 @@ out vec3 v_normal_body;
 out vec3 v_albedo;
 out vec3 v_sun_transmittance;
 out vec3 v_sky_irradiance;  // per unit solar irradiance
+out float v_sun_over_horizon;  // the sun's elevation minus the horizon's in its azimuth, radians
+
+const float kHalfPi = 1.5707963;
+
+// horizon.cpp's decode_horizon, from the byte normalised to [0, 1].
+float decode_horizon(float v) {
+  float q = 2.0 * v - 1.0;
+  return sign(q) * q * q * kHalfPi;
+}
+
+// How far the sun stands above this vertex's horizon, in the directions
+// of its tile's grid (horizon.h): the horizon in the sun's azimuth is
+// interpolated between the two grid directions beside it.
+float sun_over_horizon(vec3 position_body) {
+  vec3 up = normalize(position_body);
+  float elevation = asin(clamp(dot(u_sun_dir_body, up), -1.0, 1.0));
+  vec3 along_i = u_axis_i - dot(u_axis_i, up) * up;
+  vec3 along_j = u_axis_j - dot(u_axis_j, up) * up;
+  float azimuth = atan(dot(u_sun_dir_body, along_j) / length(along_j),
+                       dot(u_sun_dir_body, along_i) / length(along_i));
+  float sector = mod(azimuth / (0.25 * 3.14159265), 8.0);
+  int k0 = int(floor(sector)) % 8, k1 = (k0 + 1) % 8;
+  float horizon[8] = float[8](a_horizon_0123.x, a_horizon_0123.y, a_horizon_0123.z,
+                              a_horizon_0123.w, a_horizon_4567.x, a_horizon_4567.y,
+                              a_horizon_4567.z, a_horizon_4567.w);
+  float h = mix(decode_horizon(horizon[k0]), decode_horizon(horizon[k1]), fract(sector));
+  return elevation - h;
+}
 
 void main() {
   vec3 rel_eye = u_center_rel_eye + a_offset;
@@ -35,6 +70,7 @@ void main() {
   gl_Position = u_clip_from_view * vec4(u_view_from_body * rel_eye, 1.0);
   v_normal_body = a_normal;
   v_albedo = a_albedo.rgb;
+  v_sun_over_horizon = u_shadows != 0 ? sun_over_horizon(u_center_body + a_offset) : kHalfPi;
   v_sun_transmittance = vec3(1.0);
   v_sky_irradiance = vec3(0.0);
   if (u_has_atmosphere != 0) {

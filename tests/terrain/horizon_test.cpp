@@ -1,0 +1,141 @@
+// Terrain shadows' horizons: against a fine march over the ground itself,
+// their coding, and their independence from what the memo held.
+#include "terrain/horizon.h"
+#include "terrain/cube_sphere.h"
+#include "terrain/tile_mesh.h"
+
+#include "core/data_paths.h"
+
+#include <gtest/gtest.h>
+#include <glm/gtc/constants.hpp>
+
+#include <cmath>
+#include <cstring>
+
+namespace planet {
+namespace {
+
+TerrainSurface load_surface(const std::string& name) {
+  Body body = load_body(data_dir() / "planets" / (name + ".json"));
+  return TerrainSurface(body.shape, parse_terrain(body));
+}
+
+TileKey key_at(double lat_deg, double lon_deg, int level) {
+  double lat = glm::radians(lat_deg), lon = glm::radians(lon_deg);
+  FacePoint f = sphere_to_cube({std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon),
+                                std::sin(lat)});
+  auto cell = [&](double u) { return int(std::floor(0.5 * (u + 1.0) * double(1 << level))); };
+  return {f.face, level, cell(f.s), cell(f.t)};
+}
+
+// The horizon's elevation from a grid vertex along grid direction k,
+// marched over the height source itself in quarter grid steps near the
+// vertex, and in steps of 1/64 of the distance beyond, out to 4000 grid
+// steps.
+double marched_horizon(const TerrainSurface& surface, const TileKey& key, int i, int j, int k) {
+  const double step = key.size() / (kTileGrid - 1);
+  const double s = key.s0() + step * i, t = key.t0() + step * j;
+  const glm::dvec3 x = surface.face_point(key.face, s, t);
+  const glm::dvec3 up = glm::normalize(x);
+  double best = -1.0;
+  for (double u = 0.25; u <= 4000.0; u += std::max(0.25, u / 64.0)) {
+    glm::dvec3 d = surface.face_point(key.face, s + step * u * kHorizonStep[k][0],
+                                      t + step * u * kHorizonStep[k][1]) -
+                   x;
+    best = std::max(best, glm::dot(d, up) / glm::length(d));
+  }
+  return std::asin(best);
+}
+
+struct Agreement {
+  int cases = 0, agree = 0;
+  int shadowed = 0;  // by the march: lit everywhere would agree on the rest alone
+  double rate() const { return double(agree) / cases; }
+};
+
+// Whether the tile's vertices are in the shadow of a sun at each elevation
+// in each grid direction, against the march: the share of cases that agree.
+Agreement shadow_agreement(const TerrainSurface& surface, const TileKey& key) {
+  TileMesh tile = build_tile(surface, key);
+  Agreement a;
+  for (int j = 2; j < kTileGrid; j += 5) {
+    for (int i = 2; i < kTileGrid; i += 5) {
+      for (int k = 0; k < kHorizonDirections; ++k) {
+        double marched = marched_horizon(surface, key, i, j, k);
+        double built = decode_horizon(tile.vertices[size_t(j * kTileGrid + i)].horizon[k]);
+        for (double sun_deg : {1.0, 2.0, 4.0, 8.0, 16.0}) {
+          double sun = glm::radians(sun_deg);
+          // Within the drawn penumbra (a quarter degree) either is right.
+          if (std::abs(sun - marched) < glm::radians(0.25)) continue;
+          ++a.cases;
+          a.agree += (sun > built) == (sun > marched);
+          a.shadowed += sun < marched;
+        }
+      }
+    }
+  }
+  return a;
+}
+
+TEST(HorizonTest, ShadowsAgreeWithAMarchOverTheGroundOnEarthAndMars) {
+  // A tile in the Alps of 90 m grid steps, one on Mars's Gale crater rim of
+  // 65 m, and coarser ones whose horizons come mostly from their ancestors.
+  const TerrainSurface earth = load_surface("earth");
+  const TerrainSurface mars = load_surface("mars");
+  struct Case {
+    const TerrainSurface* surface;
+    TileKey key;
+    double min_rate;
+  } cases[] = {
+      {&earth, key_at(46.55, 7.98, 12), 0.95},
+      {&earth, key_at(46.55, 7.98, 16), 0.95},
+      {&mars, key_at(-4.6, 137.4, 12), 0.95},
+      {&mars, key_at(-5.0, 137.8, 15), 0.95},
+  };
+  for (const Case& c : cases) {
+    Agreement a = shadow_agreement(*c.surface, c.key);
+    SCOPED_TRACE(c.key.name());
+    EXPECT_GT(a.cases, 1000);
+    EXPECT_GE(a.rate(), c.min_rate) << a.agree << " of " << a.cases;
+    // Enough shadow that a sun never hidden would fail.
+    EXPECT_GT(a.shadowed, int((1.0 - c.min_rate) * a.cases) * 2) << a.shadowed;
+    std::printf("%s: shadow agrees with the march in %d of %d cases (%.1f %%), %d in shadow\n",
+                c.key.name().c_str(), a.agree, a.cases, 100.0 * a.rate(), a.shadowed);
+  }
+}
+
+TEST(HorizonTest, CodingKeepsLowAnglesToATenthOfADegree) {
+  for (double deg = -90.0; deg <= 90.0; deg += 0.05) {
+    float a = float(glm::radians(deg));
+    double back = glm::degrees(double(decode_horizon(encode_horizon(a))));
+    double allowed = std::abs(deg) <= 1.0 ? 0.1 : std::abs(deg) <= 20.0 ? 0.4 : 1.5;
+    ASSERT_NEAR(back, deg, allowed) << deg;
+  }
+  EXPECT_EQ(encode_horizon(-10.0f), 0);
+  EXPECT_EQ(encode_horizon(10.0f), 255);
+}
+
+TEST(HorizonTest, ATilesHorizonsDoNotDependOnWhatTheMemoHeld) {
+  // A tile built alone (its ancestors' horizons computed on the way) and
+  // one built after its ancestors and hundreds of others, as a cache
+  // would: byte for byte the same vertices.
+  const TileKey key = key_at(46.55, 7.98, 11);
+  std::vector<TileVertex> alone = build_tile(load_surface("earth"), key).vertices;
+
+  const TerrainSurface earth = load_surface("earth");
+  for (TileKey k = key; k.level > 0;) {
+    k = k.parent();
+    build_tile(earth, k);
+  }
+  for (int n = 0; n < 300; ++n) {  // more than the memo keeps
+    earth.horizon_memo().keep({(key.face + 1) % 6, 14, n, 7},
+                              std::make_shared<const HorizonField>());
+  }
+  EXPECT_LT(earth.horizon_memo().size(), 300u);
+  std::vector<TileVertex> cached = build_tile(earth, key).vertices;
+  ASSERT_EQ(alone.size(), cached.size());
+  EXPECT_EQ(std::memcmp(alone.data(), cached.data(), alone.size() * sizeof(TileVertex)), 0);
+}
+
+}  // namespace
+}  // namespace planet
