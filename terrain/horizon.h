@@ -24,7 +24,7 @@ namespace planet {
 constexpr int kHorizonDirections = 8;
 // Grid steps a tile looks along each direction (and the border of extra
 // grid points its build samples for it).
-constexpr int kHorizonReach = 8;
+constexpr int kHorizonReach = 4;
 
 // Direction k runs along grid step kHorizonStep[k] = (di, dj): +i, then
 // counter-clockwise in 45-degree steps seen from above.

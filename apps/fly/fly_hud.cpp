@@ -111,6 +111,8 @@ HudChanges Hud::draw(const HudView& v) {
     }
     float lod = v.lod_pixels;
     if (ImGui::SliderFloat("LOD error", &lod, 0.25f, 8.0f, "%.2f px")) changes.lod_pixels = lod;
+    bool shadows = v.terrain_shadows;
+    if (ImGui::Checkbox("terrain shadows", &shadows)) changes.terrain_shadows = shadows;
     ImGui::PopItemWidth();
   }
   if (ImGui::CollapsingHeader("keys")) {

@@ -302,6 +302,7 @@ HudView FlySession::hud_view(const Camera& cam, const glm::dvec3& sun, double re
   v.time_scale = clock_.scale();
   v.exposure = exposure_;
   v.lod_pixels = lod_pixels_;
+  v.terrain_shadows = renderer_->terrain_shadows();
   return v;
 }
 
@@ -320,6 +321,7 @@ void FlySession::apply(const HudChanges& c) {
     lod_pixels_ = *c.lod_pixels;
     if (renderer_->terrain()) renderer_->terrain()->set_pixel_budget(double(lod_pixels_));
   }
+  if (c.terrain_shadows) renderer_->set_terrain_shadows(*c.terrain_shadows);
 }
 
 void FlySession::blit() {
