@@ -1,6 +1,5 @@
 #include "terrain/horizon.h"
 
-
 #include <algorithm>
 #include <cmath>
 
@@ -73,7 +72,7 @@ TileHorizons compute_horizons(const BorderedGrid& grid, const TileKey& key,
 }
 
 std::shared_ptr<const HorizonField> HorizonMemo::far(const TerrainSurface& surface,
-                                                      const TileKey& key) {
+                                                     const TileKey& key) {
   {
     std::lock_guard lock(mutex_);
     auto it = kept_.find(key);

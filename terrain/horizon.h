@@ -28,7 +28,7 @@ constexpr int kHorizonReach = 4;
 
 // Direction k runs along grid step kHorizonStep[k] = (di, dj): +i, then
 // counter-clockwise in 45-degree steps seen from above.
-constexpr int kHorizonStep[kHorizonDirections][2] = {{1, 0},   {1, 1},   {0, 1},  {-1, 1},
+constexpr int kHorizonStep[kHorizonDirections][2] = {{1, 0},  {1, 1},   {0, 1},  {-1, 1},
                                                      {-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
 
 // A tile's grid with a border of kHorizonReach points on every side: body

@@ -36,10 +36,12 @@ TileMesh build_tile(const TerrainSurface& surface, const TileKey& key) {
   if (key.level > 0) parent_far = surface.horizon_memo().far(surface, key.parent());
   TileHorizons horizons = compute_horizons(grid, key, parent_far.get());
   surface.horizon_memo().keep(key, std::make_shared<const HorizonField>(std::move(horizons.far)));
-  tile.axis_i = glm::vec3(glm::normalize(cube_to_sphere(key.face, s0 + key.size(), t0 + 0.5 * key.size()) -
-                                         cube_to_sphere(key.face, s0, t0 + 0.5 * key.size())));
-  tile.axis_j = glm::vec3(glm::normalize(cube_to_sphere(key.face, s0 + 0.5 * key.size(), t0 + key.size()) -
-                                         cube_to_sphere(key.face, s0 + 0.5 * key.size(), t0)));
+  tile.axis_i =
+      glm::vec3(glm::normalize(cube_to_sphere(key.face, s0 + key.size(), t0 + 0.5 * key.size()) -
+                               cube_to_sphere(key.face, s0, t0 + 0.5 * key.size())));
+  tile.axis_j =
+      glm::vec3(glm::normalize(cube_to_sphere(key.face, s0 + 0.5 * key.size(), t0 + key.size()) -
+                               cube_to_sphere(key.face, s0 + 0.5 * key.size(), t0)));
 
   const auto& config = surface.config();
   tile.vertices.resize(kTileVertexCount);

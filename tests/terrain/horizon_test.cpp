@@ -22,9 +22,9 @@ TerrainSurface load_surface(const std::string& name) {
 
 TileKey key_at(double lat_deg, double lon_deg, int level) {
   double lat = glm::radians(lat_deg), lon = glm::radians(lon_deg);
-  FacePoint f = sphere_to_cube({std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon),
-                                std::sin(lat)});
-  auto cell = [&](double u) { return int(std::floor(0.5 * (u + 1.0) * double(1 << level))); };
+  FacePoint f =
+      sphere_to_cube({std::cos(lat) * std::cos(lon), std::cos(lat) * std::sin(lon), std::sin(lat)});
+  auto cell = [&](double u) { return uint32_t(std::floor(0.5 * (u + 1.0) * double(1 << level))); };
   return {f.face, level, cell(f.s), cell(f.t)};
 }
 
@@ -121,7 +121,8 @@ TEST(HorizonTest, ATileSplitFlipsFewShadows) {
       TileMesh tile = build_tile(*surface, child);
       for (int j = 0; j < kTileGrid; j += 2) {
         for (int i = 0; i < kTileGrid; i += 2) {
-          int pi = (c & 1) * (kTileGrid - 1) / 2 + i / 2, pj = (c >> 1) * (kTileGrid - 1) / 2 + j / 2;
+          int pi = (c & 1) * (kTileGrid - 1) / 2 + i / 2,
+              pj = (c >> 1) * (kTileGrid - 1) / 2 + j / 2;
           const TileVertex& a = tile.vertices[size_t(j * kTileGrid + i)];
           const TileVertex& b = parent.vertices[size_t(pj * kTileGrid + pi)];
           for (int k = 0; k < kHorizonDirections; ++k) {
@@ -167,7 +168,7 @@ TEST(HorizonTest, ATilesHorizonsDoNotDependOnWhatTheMemoHeld) {
     k = k.parent();
     build_tile(earth, k);
   }
-  for (int n = 0; n < 300; ++n) {  // more than the memo keeps
+  for (uint32_t n = 0; n < 300; ++n) {  // more than the memo keeps
     earth.horizon_memo().keep({(key.face + 1) % 6, 14, n, 7},
                               std::make_shared<const HorizonField>());
   }
