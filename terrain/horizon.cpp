@@ -7,18 +7,16 @@ namespace planet {
 
 namespace {
 
-constexpr int N = kTileGrid;
-constexpr int B = kHorizonReach;
-constexpr float kHalfPi = 1.57079633f;
+constexpr float kRightAngle = 1.57079633f;
 
 // The parent's far horizon at a vertex of one of its four children: the
 // child's grid is half the parent's, so its even vertices are the
 // parent's and the odd ones lie between (the mean of the two or four).
 float parent_angle(const HorizonField& parent, const TileKey& key, int i, int j, int k) {
-  const int pi0 = (key.x & 1) * (N - 1) + i, pj0 = (key.y & 1) * (N - 1) + j;
+  const int pi0 = (key.x & 1) * (kTileGrid - 1) + i, pj0 = (key.y & 1) * (kTileGrid - 1) + j;
   const int i0 = pi0 / 2, i1 = (pi0 + 1) / 2, j0 = pj0 / 2, j1 = (pj0 + 1) / 2;
   auto at = [&](int pi, int pj) {
-    return float(parent[size_t((pj * N + pi) * kHorizonDirections + k)]);
+    return float(parent[size_t((pj * kTileGrid + pi) * kHorizonDirections + k)]);
   };
   return 0.25f * kFarHorizonUnit * (at(i0, j0) + at(i1, j0) + at(i0, j1) + at(i1, j1));
 }
@@ -30,12 +28,12 @@ BorderedGrid sample_grid(const TerrainSurface& surface, const TileKey& key) {
   constexpr int M = BorderedGrid::kSide;
   g.points.resize(size_t(M * M));
   g.heights.resize(size_t(M * M));
-  const double s0 = key.s0(), t0 = key.t0(), step = key.size() / (N - 1);
+  const double s0 = key.s0(), t0 = key.t0(), step = key.size() / (kTileGrid - 1);
   // The face parameter runs on past the face's edge in the border; the
   // tangent warp is smooth across (a root tile's border reaches a quarter
   // of a face beyond it, well short of the warp's pole).
-  for (int j = -B; j < N + B; ++j) {
-    for (int i = -B; i < N + B; ++i) {
+  for (int j = -kHorizonReach; j < kTileGrid + kHorizonReach; ++j) {
+    for (int i = -kHorizonReach; i < kTileGrid + kHorizonReach; ++i) {
       size_t n = BorderedGrid::index(i, j);
       g.points[n] = surface.face_point(key.face, s0 + step * i, t0 + step * j, &g.heights[n]);
     }
@@ -46,22 +44,22 @@ BorderedGrid sample_grid(const TerrainSurface& surface, const TileKey& key) {
 TileHorizons compute_horizons(const BorderedGrid& grid, const TileKey& key,
                               const HorizonField* parent_far) {
   TileHorizons h;
-  h.seen.resize(size_t(N * N * kHorizonDirections));
+  h.seen.resize(size_t(kTileGrid * kTileGrid * kHorizonDirections));
   h.far.resize(h.seen.size());
-  for (int j = 0; j < N; ++j) {
-    for (int i = 0; i < N; ++i) {
+  for (int j = 0; j < kTileGrid; ++j) {
+    for (int i = 0; i < kTileGrid; ++i) {
       const glm::dvec3& x = grid.at(i, j);
       const glm::dvec3 up = glm::normalize(x);  // geocentric, as the shader takes it
       for (int k = 0; k < kHorizonDirections; ++k) {
         double near_sin = -1.0, far_sin = -1.0;
-        for (int n = 1; n <= B; ++n) {
+        for (int n = 1; n <= kHorizonReach; ++n) {
           glm::dvec3 d = grid.at(i + n * kHorizonStep[k][0], j + n * kHorizonStep[k][1]) - x;
           double sin_elevation = glm::dot(d, up) / glm::length(d);
           near_sin = std::max(near_sin, sin_elevation);
-          if (2 * n >= B) far_sin = std::max(far_sin, sin_elevation);
+          if (2 * n >= kHorizonReach) far_sin = std::max(far_sin, sin_elevation);
         }
-        float inherited = parent_far ? parent_angle(*parent_far, key, i, j, k) : -kHalfPi;
-        size_t slot = size_t((j * N + i) * kHorizonDirections + k);
+        float inherited = parent_far ? parent_angle(*parent_far, key, i, j, k) : -kRightAngle;
+        size_t slot = size_t((j * kTileGrid + i) * kHorizonDirections + k);
         h.seen[slot] = std::max(float(std::asin(near_sin)), inherited);
         float far = std::max(float(std::asin(far_sin)), inherited);
         h.far[slot] = int16_t(std::lround(far / kFarHorizonUnit));
@@ -110,14 +108,14 @@ size_t HorizonMemo::size() const {
 }
 
 uint8_t encode_horizon(float angle) {
-  float a = std::clamp(angle / kHalfPi, -1.0f, 1.0f);
+  float a = std::clamp(angle / kRightAngle, -1.0f, 1.0f);
   float code = 127.5f + 127.5f * std::copysign(std::sqrt(std::abs(a)), a);
   return uint8_t(std::lround(std::clamp(code, 0.0f, 255.0f)));
 }
 
 float decode_horizon(uint8_t code) {
   float q = float(code) / 127.5f - 1.0f;
-  return std::copysign(q * q, q) * kHalfPi;
+  return std::copysign(q * q, q) * kRightAngle;
 }
 
 }  // namespace planet
