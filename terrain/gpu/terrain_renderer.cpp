@@ -107,8 +107,8 @@ TerrainStats TerrainRenderer::draw(const Camera& camera, int width, int height,
   if (lighting.sky_irradiance != 0) glBindTextureUnit(kSkyIrradianceUnit, lighting.sky_irradiance);
   glUniform3fv(program_.uniform("u_sun_irradiance"), 1, glm::value_ptr(lighting.solar_irradiance));
   glUniform1i(program_.uniform("u_shadows"), lighting.shadows ? 1 : 0);
-  // The shadow's edge: the sun's disc, widened to the horizon coding's
-  // step near level (0.1 degree) so that it does not band.
+  // The shadow's edge: the sun's disc, and at least 0.14 degree, a little
+  // over the horizon coding's step near level, so that it does not band.
   glUniform1f(program_.uniform("u_penumbra"),
               float(std::max(lighting.sun_angular_radius, 0.0025)));
   if (lighting.has_atmosphere) {

@@ -1,6 +1,7 @@
 // Lambertian terrain lit by the sun through the atmosphere, where the
-// terrain's horizon does not hide it, plus the sky's ambient: the radiance leaving the ground toward the camera. The
-// atmosphere pass adds what lies between (aerial perspective).
+// terrain's horizon does not hide it, plus the sky's ambient: the radiance
+// leaving the ground toward the camera. The atmosphere pass adds what lies
+// between (aerial perspective).
 #include "atmosphere/shaders/surface_lighting.glsl"
 
 in vec3 v_normal_body;
