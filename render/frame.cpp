@@ -42,6 +42,8 @@ FrameRenderer::FrameRenderer(int width, int height)
       atmosphere_block_(make_buffer(sizeof(AtmosphereBlock), nullptr)) {
   AtmosphereBlock zero{};
   glNamedBufferSubData(atmosphere_block_.id(), 0, sizeof(zero), &zero);
+  const float unit_exposure[2] = {1.0f, 0.0f};
+  exposure_block_ = make_buffer(sizeof(unit_exposure), unit_exposure);
   check_gl_errors("FrameRenderer setup");
 }
 
@@ -113,6 +115,60 @@ void FrameRenderer::set_antialiasing(int samples) {
         Program::graphics("gl/shaders/fullscreen.vert", "render/shaders/surface_edges.frag");
   }
   check_gl_errors("FrameRenderer::set_antialiasing");
+}
+
+void FrameRenderer::set_stars(bool on) {
+  stars_on_ = on;
+  if (on && !stars_) stars_ = std::make_unique<StarField>(bright_stars());
+}
+
+double FrameRenderer::last_exposure() const {
+  if (!exposure_measured_) return exposure_;
+  float measured[2] = {0, 0};
+  DriverWait wait("reading the frame's exposure back");
+  glGetNamedBufferSubData(exposure_block_.id(), 0, sizeof(measured), measured);
+  return measured[0];
+}
+
+void FrameRenderer::draw_stars(const Camera& camera, double exposure) {
+  timer_.begin("stars");
+  const bool sky = atmosphere_ && technique_;
+  StarView view;
+  view.body_from_icrf = body_from_icrf_;
+  view.has_atmosphere = sky;
+  if (sky) {
+    // Radiance in W m^-2 sr^-1 nm^-1 under an atmosphere: the sun at 1 AU
+    // as data/planets/earth.json gives it (whatever the body's distance;
+    // the stars do not change with it).
+    view.sun_at_1au = glm::vec3(1.474f, 1.8504f, 1.91198f);
+    view.atmo_scale = atmosphere_scale(body_.shape, atmosphere_->bottom_radius);
+    view.scale = technique_->writes_display_values() ? float(exposure) : 1.0f;
+    glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, atmosphere_block_.id());
+  }
+  const GLuint target = sky ? hdr_fbo_.id() : surface_fbo_.id();
+  stars_->draw(target, width_, height_, depth_.id(), camera, view);
+  timer_.end();
+}
+
+void FrameRenderer::measure_exposure() {
+  timer_.begin("exposure");
+  if (!exposure_program_.id()) {
+    exposure_program_ = Program::compute("render/shaders/auto_exposure.comp");
+  }
+  glUseProgram(exposure_program_.id());
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+  glBindTextureUnit(0, radiance().id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, exposure_block_.id());
+  glUniform2i(exposure_program_.uniform("u_size"), width_, height_);
+  // A middle grey; a cap far above any lit ground or sky (the sun's disc
+  // is 10^4 and more); from 1/10 to 10^4, the dark-adapted eye's: there a
+  // star of magnitude 3 shows at about display white.
+  glUniform1f(exposure_program_.uniform("u_key"), 0.18f);
+  glUniform1f(exposure_program_.uniform("u_cap"), 1.0f);
+  glUniform2f(exposure_program_.uniform("u_bounds"), 0.1f, 1e4f);
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  timer_.end();
 }
 
 void FrameRenderer::draw_surfaces(const Camera& camera, const glm::dvec3& sun_dir_body,
@@ -255,12 +311,20 @@ FrameStats FrameRenderer::render(const Camera& camera, const glm::dvec3& sun_dir
     timer_.end();
   }
 
+  if (stars_on_) draw_stars(camera, exposure);
+  exposure_ = exposure;
+  const bool display_values = sky && technique_->writes_display_values();
+  exposure_measured_ = auto_exposure_ && !display_values;
+  if (exposure_measured_) measure_exposure();
+
   timer_.begin("tonemap");
   tonemap_pass_.begin(ldr_fbo_.id(), width_, height_, tonemap_program_);
   glBindTextureUnit(0, radiance().id());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, exposure_block_.id());
   glUniform1f(tonemap_program_.uniform("u_exposure"), float(exposure));
-  glUniform1i(tonemap_program_.uniform("u_display_values"),
-              sky && technique_->writes_display_values() ? 1 : 0);
+  glUniform1i(tonemap_program_.uniform("u_auto_exposure"),
+              auto_exposure_ && !display_values ? 1 : 0);
+  glUniform1i(tonemap_program_.uniform("u_display_values"), display_values ? 1 : 0);
   tonemap_pass_.draw();
   timer_.end();
 

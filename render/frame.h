@@ -9,6 +9,7 @@
 #include "gl/program.h"
 #include "gl/texture.h"
 #include "gl/timer.h"
+#include "render/star_field.h"
 #include "sim/body.h"
 #include "sim/camera.h"
 #include "terrain/gpu/terrain_renderer.h"
@@ -84,6 +85,23 @@ class FrameRenderer {
   void set_terrain_shadows(bool on) { terrain_shadows_ = on; }
   bool terrain_shadows() const { return terrain_shadows_; }
 
+  // The stars behind the sky (star_field.h), off by default: the
+  // techniques' accuracy is measured on the sky alone. The orientation
+  // turns the catalogue's ICRF into the body's frame for the next frames
+  // (body_from_icrf).
+  void set_stars(bool on);
+  bool stars() const { return stars_on_; }
+  void set_star_orientation(const glm::dmat3& body_from_icrf) { body_from_icrf_ = body_from_icrf; }
+
+  // Automatic exposure: each frame's own, set from its mean luminance
+  // (auto_exposure.comp) in place of the one render() is given. Off by
+  // default.
+  void set_auto_exposure(bool on) { auto_exposure_ = on; }
+  bool auto_exposure() const { return auto_exposure_; }
+  // The exposure the last frame was tone-mapped with: the one given, or
+  // the measured one (read back from the GL) when automatic.
+  double last_exposure() const;
+
   // False: the frame tells the technique nothing that would let it leave
   // a pass or a pixel out (no surface distance, no screen bound of the
   // shell), so every pass and pixel is computed: what pruning is checked
@@ -118,6 +136,10 @@ class FrameRenderer {
   // timed as `pass`.
   void blend_surface_edges(GLuint target, const char* pass);
 
+  // The stars, then the automatic exposure, into the frame's radiance.
+  void draw_stars(const Camera& camera, double exposure);
+  void measure_exposure();
+
   int width_, height_;
   Texture depth_, surface_, hdr_, ldr_;
   // The sky target's stencil: cleared before the technique draws, for the
@@ -148,6 +170,14 @@ class FrameRenderer {
   double fade_weight_ = 0;
   Texture fade_;  // the previous technique's frame, made on the first fade
   Program fade_program_;
+  bool stars_on_ = false;
+  std::unique_ptr<StarField> stars_;  // made on the first set_stars(true)
+  glm::dmat3 body_from_icrf_{1.0};
+  bool auto_exposure_ = false;
+  double exposure_ = 1.0;           // the last frame's, as given
+  bool exposure_measured_ = false;  // the last frame's was measured
+  Program exposure_program_;
+  Buffer exposure_block_;
   GpuTimer timer_;
 };
 

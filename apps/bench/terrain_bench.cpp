@@ -6,6 +6,7 @@
 #include "gl/context.h"
 #include "render/frame.h"
 #include "sim/geodesy.h"
+#include "sim/star_catalogue.h"
 #include "terrain/horizon.h"
 #include "terrain/lod.h"
 #include "terrain/tile_mesh.h"
@@ -155,6 +156,50 @@ void BM_TerrainFrame(benchmark::State& state) {
 }
 BENCHMARK(BM_TerrainFrame)
     ->ArgsProduct({{2, 10000, 400000}, {1, 4}, {0, 1}})
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
+
+// The night sky at 1280x720 (alps_nightfall's last frame: 3200 m over the
+// Alps, the sun 19 deg down, hillaire): the whole frame without stars and
+// at a fixed exposure (range(0) 0), and with the stars and the automatic
+// exposure (1), with their own two passes' wall time.
+void BM_StarsFrame(benchmark::State& state) {
+  auto context = GlContext::create_headless();
+  Body body = earth();
+  FrameRenderer renderer(1280, 720);
+  renderer.set_antialiasing(4);
+  renderer.set_stars(state.range(0) != 0);
+  renderer.set_auto_exposure(state.range(0) != 0);
+  renderer.set_synchronous_timing(true);
+  renderer.set_body(body, load_atmosphere(body), make_technique("hillaire"));
+  Geodesy geodesy(body.shape);
+  Camera camera = geodesy.camera_at({glm::radians(46.55), glm::radians(7.98), 3200.0},
+                                    glm::radians(115.0), glm::radians(12.0), glm::radians(70.0));
+  const UtcSeconds utc = parse_utc("2026-01-15T18:00:00Z", "bench");
+  const glm::dvec3 sun = sun_dir_body(body.ephemeris, body.rotation, utc);
+  renderer.set_star_orientation(body_from_icrf(body, utc));
+  renderer.set_terrain_wait(300.0);
+  renderer.render(camera, sun, 1e4);  // builds the tiles, pays for shader compilation
+  renderer.set_terrain_wait(0.0);
+  double stars_ms = 0, exposure_ms = 0;
+  for (auto _ : state) {
+    FrameStats stats = renderer.render(camera, sun, 1e4);
+    double frame_ms = 0;
+    for (const auto& p : stats.passes) {
+      frame_ms += p.wall_ms;
+      if (p.pass == "stars") stars_ms += p.wall_ms;
+      if (p.pass == "exposure") exposure_ms += p.wall_ms;
+    }
+    state.SetIterationTime(frame_ms * 1e-3);
+  }
+  const double n = double(state.iterations());
+  state.counters["stars_ms"] = stars_ms / n;
+  state.counters["exposure_ms"] = exposure_ms / n;
+}
+BENCHMARK(BM_StarsFrame)
+    ->Arg(0)
+    ->Arg(1)
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(3);

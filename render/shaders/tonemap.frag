@@ -8,6 +8,12 @@ in vec2 v_ndc;
 layout(location = 0) out vec4 o_color;
 layout(binding = 0) uniform sampler2D u_hdr;
 uniform float u_exposure;
+// 1: the exposure is the one auto_exposure.comp measured on this frame.
+uniform int u_auto_exposure;
+layout(std430, binding = 3) readonly buffer ExposureBlock {
+  float measured_exposure;
+  float mean_luminance;
+};
 // 1: the target already holds display values (a technique's own mapping).
 uniform int u_display_values;
 
@@ -19,7 +25,8 @@ float dither_noise(vec2 pixel) {
 
 void main() {
   vec3 hdr = texelFetch(u_hdr, ivec2(gl_FragCoord.xy), 0).rgb;
-  vec3 color = u_display_values != 0 ? clamp(hdr, 0.0, 1.0) : tone_map(hdr * u_exposure);
+  float exposure = u_auto_exposure != 0 ? measured_exposure : u_exposure;
+  vec3 color = u_display_values != 0 ? clamp(hdr, 0.0, 1.0) : tone_map(hdr * exposure);
   // Half a step of the 8-bit target either way, after tone mapping: smooth
   // skies quantise into noise finer than the eye, not into bands.
   color += (dither_noise(gl_FragCoord.xy) - 0.5) / 255.0;
