@@ -65,11 +65,13 @@ nlohmann::json sidecar(const FlightScript& script, const FlightPath& path, const
       {"sun_dir_body", {sun.x, sun.y, sun.z}},
       {"technique", technique},
       {"exposure", exposure},
+      {"exposure_mode", script.auto_exposure ? "auto" : "script"},
       {"image",
        {{"width", script.width},
         {"height", script.height},
         {"antialiasing", script.antialiasing},
-        {"terrain_shadows", script.terrain_shadows}}},
+        {"terrain_shadows", script.terrain_shadows},
+        {"stars", script.stars}}},
       {"gpu_ms", passes},
       {"passes_reused", reused},
       {"terrain",
@@ -270,6 +272,8 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
   FrameRenderer renderer(script.width, script.height);
   renderer.set_antialiasing(script.antialiasing);
   renderer.set_terrain_shadows(script.terrain_shadows);
+  renderer.set_stars(script.stars);
+  renderer.set_auto_exposure(script.auto_exposure);
   TerrainOptions terrain;
   terrain.pixel_budget = options.pixel_budget;
   terrain.cache_bytes = options.terrain_cache_bytes;
@@ -316,7 +320,9 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
       decision = decide(frame);
       switcher->apply(*decision, *atmosphere);
     }
+    renderer.set_star_orientation(body_from_icrf(script.body, path.utc_at(t)));
     FrameStats stats = renderer.render(camera, sun, exposure);
+    exposure = renderer.last_exposure();
     std::string stem = fmt::format("frame_{:05d}", frame);
     nlohmann::json side = sidecar(script, path, geodesy, frame, t, camera, exposure, sun, stats,
                                   renderer.terrain_stats(),
@@ -353,7 +359,8 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
        {{"width", script.width},
         {"height", script.height},
         {"antialiasing", script.antialiasing},
-        {"terrain_shadows", script.terrain_shadows}}},
+        {"terrain_shadows", script.terrain_shadows},
+        {"stars", script.stars}}},
       {"technique", budget ? fmt::format("governor, budget {:g} %", *budget) : script.technique},
       {"wall_seconds", result.wall_seconds},
   };

@@ -78,12 +78,20 @@ FlightScript load_flight_script(const std::filesystem::path& file) {
                fmt::format("{} samples a pixel: give 1 (none), 2, 4, 8 or 16", s.antialiasing));
   }
   s.terrain_shadows = image.boolean_or("terrain_shadows", true);
+  s.stars = image.boolean_or("stars", true);
   image.finish();
 
   s.frame_rate = root.number("frame_rate", 1e-3, 1000.0);
   if (s.frame_rate <= 0) root.fail("frame_rate", "must be positive");
-  s.exposure = root.number_or("exposure", 1.0, 0.0, 1e9);
-  if (s.exposure <= 0) root.fail("exposure", "must be positive");
+  s.auto_exposure = root.has("exposure") && root.raw("exposure").is_string();
+  if (s.auto_exposure) {
+    if (root.string("exposure") != "auto") {
+      root.fail("exposure", "is a positive number, or \"auto\" for each frame's own");
+    }
+  } else {
+    s.exposure = root.number_or("exposure", 1.0, 0.0, 1e9);
+    if (s.exposure <= 0) root.fail("exposure", "must be positive");
+  }
   s.vertical_fov = glm::radians(root.number_or("vertical_fov_deg", 60.0, 1.0, 170.0));
   // The name is checked against the available techniques by the renderer
   // (sim knows no GL), with this file and field in the message.
@@ -207,6 +215,9 @@ FlightScript load_flight_script(const std::filesystem::path& file) {
       f.roll = glm::radians(k.number_or("roll_deg", 0.0, -180.0, 180.0));
       f.body_from_camera = glm::normalize(body_from_enu_at(geodesy, f.place) *
                                           enu_from_camera(f.heading, f.pitch, f.roll));
+    }
+    if (s.auto_exposure && k.has("exposure")) {
+      k.fail("exposure", "given where the script's exposure is \"auto\"");
     }
     f.exposure = k.number_or("exposure", s.exposure, 1e-9, 1e9);
     k.finish();

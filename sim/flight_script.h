@@ -50,8 +50,14 @@ struct FlightScript {
   // "image": {"terrain_shadows": false}: the terrain casts no shadow from
   // the sun (terrain/horizon.h); on unless given.
   bool terrain_shadows = true;
+  // "image": {"stars": false}: no stars behind the sky (render/star_field.h);
+  // on unless given.
+  bool stars = true;
   double frame_rate = 0;
   double exposure = 1;  // multiplies radiance before tone mapping; the default for keyframes
+  // "exposure": "auto": each frame's own, from its mean luminance
+  // (render/frame.h); keyframes then give none.
+  bool auto_exposure = false;
   std::string technique = "hillaire";
   bool technique_named = false;  // the file names it: it wins over any error budget
   // "error_budget_pct": the governor chooses each frame's technique within

@@ -127,6 +127,9 @@ void add_fly_command(CLI::App& app) {
   cmd->add_option("--exposure", args->exposure, "Exposure")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  cmd->add_flag("--auto-exposure", args->auto_exposure,
+                "Each frame's exposure from its own mean luminance, up to a dark-adapted eye's "
+                "(also a HUD box)");
   cmd->add_option(
       "--size",
       [args](const CLI::results_t& r) {

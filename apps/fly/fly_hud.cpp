@@ -100,9 +100,13 @@ HudChanges Hud::draw(const HudView& v) {
       changes.time_scale = kTimeScales[size_t(scale_index)];
     }
     float log_exposure = float(std::log10(v.exposure));
-    if (ImGui::SliderFloat("log exposure", &log_exposure, -3.0f, 3.0f, "%.2f")) {
+    if (ImGui::SliderFloat("log exposure", &log_exposure, -3.0f, 4.0f,
+                           v.auto_exposure ? "%.2f (auto)" : "%.2f")) {
       changes.exposure = std::pow(10.0, double(log_exposure));
+      changes.auto_exposure = false;  // a hand on the slider takes over
     }
+    bool automatic = v.auto_exposure;
+    if (ImGui::Checkbox("auto exposure", &automatic)) changes.auto_exposure = automatic;
     // The governor: off at 0, else the error it may spend, percent.
     float budget = float(v.error_budget);
     if (ImGui::SliderFloat("error budget", &budget, 0.0f, 50.0f,
@@ -113,6 +117,8 @@ HudChanges Hud::draw(const HudView& v) {
     if (ImGui::SliderFloat("LOD error", &lod, 0.25f, 8.0f, "%.2f px")) changes.lod_pixels = lod;
     bool shadows = v.terrain_shadows;
     if (ImGui::Checkbox("terrain shadows", &shadows)) changes.terrain_shadows = shadows;
+    bool stars = v.stars;
+    if (ImGui::Checkbox("stars", &stars)) changes.stars = stars;
     ImGui::PopItemWidth();
   }
   if (ImGui::CollapsingHeader("keys")) {

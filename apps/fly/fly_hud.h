@@ -28,16 +28,18 @@ struct HudView {
   double exposure = 1;
   float lod_pixels = 1;
   bool terrain_shadows = true;
-  double error_budget = 0;   // percent; 0: the governor is off
-  std::string governor;      // its choice, prediction and the most accurate's cost
-  std::string governor_why;  // why, in a line
+  bool stars = true;
+  bool auto_exposure = false;  // then `exposure` is the frame's measured one
+  double error_budget = 0;     // percent; 0: the governor is off
+  std::string governor;        // its choice, prediction and the most accurate's cost
+  std::string governor_why;    // why, in a line
 };
 
 struct HudChanges {
   std::optional<std::string> body, technique;
   std::optional<double> hours_utc, time_scale, exposure;
   std::optional<float> lod_pixels;
-  std::optional<bool> terrain_shadows;
+  std::optional<bool> terrain_shadows, stars, auto_exposure;
   std::optional<double> error_budget;  // 0: off
 };
 

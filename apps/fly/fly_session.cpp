@@ -8,6 +8,7 @@
 #include "sim/free_flight.h"
 #include "sim/geodesy.h"
 #include "sim/orbit_flight.h"
+#include "sim/star_catalogue.h"
 #include "sim/sun_ephemeris.h"
 #include "terrain/ground.h"
 
@@ -54,6 +55,8 @@ FlySession::FlySession(const FlyArgs& args, GLFWwindow* window, FlyInput& input,
   ldr_framebuffer_ = make_framebuffer(renderer_->ldr_texture(), 0);
   // A window never waits for tiles: it draws parents while children load.
   renderer_->set_terrain_wait(0.0);
+  renderer_->set_stars(true);
+  renderer_->set_auto_exposure(args.auto_exposure);
   if (!args.flight_file.empty()) {
     FlightScript script = load_flight_script(args.flight_file);
     technique_ = script.technique;
@@ -62,6 +65,8 @@ FlySession::FlySession(const FlyArgs& args, GLFWwindow* window, FlyInput& input,
                                             : script.error_budget_percent.value_or(0.0);
     }
     exposure_ = script.exposure;
+    renderer_->set_auto_exposure(script.auto_exposure);
+    renderer_->set_stars(script.stars);
     load(script.body.file.string(), false);
     auto scripted = std::make_unique<ScriptedFlight>(std::move(script));
     scripted_ = scripted.get();
@@ -89,7 +94,7 @@ bool FlySession::frame(double real_dt) {
     }
     ++steps_;
     if (recorder_ && steps_ % int(std::lround(1.0 / (kStep * kRecordRate))) == 0) {
-      recorder_->add(camera(), clock_.elapsed(), exposure_);
+      recorder_->add(camera(), clock_.elapsed(), renderer_->last_exposure());
     }
   }
   Camera cam = camera();
@@ -104,6 +109,7 @@ bool FlySession::frame(double real_dt) {
     switch_->apply(*decision_, *atmosphere_);
     set_progress_observer(nullptr);
   }
+  renderer_->set_star_orientation(body_from_icrf(body_, clock_.utc()));
   stats_ = renderer_->render(cam, sun, exposure_);
   blit();
   apply(hud_.draw(hud_view(cam, sun, real_dt)));
@@ -300,7 +306,8 @@ HudView FlySession::hud_view(const Camera& cam, const glm::dvec3& sun, double re
   double day_start = std::floor((clock_.utc() + 43200.0) / 86400.0) * 86400.0 - 43200.0;
   v.hours_utc = (clock_.utc() - day_start) / 3600.0;
   v.time_scale = clock_.scale();
-  v.exposure = exposure_;
+  v.auto_exposure = renderer_->auto_exposure();
+  v.exposure = renderer_->last_exposure();
   v.lod_pixels = lod_pixels_;
   v.terrain_shadows = renderer_->terrain_shadows();
   return v;
@@ -322,6 +329,12 @@ void FlySession::apply(const HudChanges& c) {
     if (renderer_->terrain()) renderer_->terrain()->set_pixel_budget(double(lod_pixels_));
   }
   if (c.terrain_shadows) renderer_->set_terrain_shadows(*c.terrain_shadows);
+  if (c.stars) renderer_->set_stars(*c.stars);
+  if (c.auto_exposure) {
+    // Off: the slider starts from what the frames were shown with.
+    if (!*c.auto_exposure && renderer_->auto_exposure()) exposure_ = renderer_->last_exposure();
+    renderer_->set_auto_exposure(*c.auto_exposure);
+  }
 }
 
 void FlySession::blit() {
@@ -350,7 +363,7 @@ void FlySession::toggle_recording() {
     recorder_ = std::make_unique<FlightRecorder>(body_key_, technique_, renderer_->width(),
                                                  renderer_->height(), args_.vertical_fov_deg,
                                                  kRecordRate, clock_.epoch());
-    recorder_->add(camera(), clock_.elapsed(), exposure_);
+    recorder_->add(camera(), clock_.elapsed(), renderer_->last_exposure());
     std::printf("recording\n");
   } else {
     std::filesystem::create_directories(args_.out_dir);

@@ -39,6 +39,7 @@ struct FlyArgs {
   // llvmpipe (where 4 cost a quarter of a frame more).
   int antialiasing = 0;
   double exposure = 8.0, vertical_fov_deg = 60.0;
+  bool auto_exposure = false;  // each frame's own, from its mean luminance
   std::string out_dir = ".";
   std::string flight_file;  // fly a script instead of the start place
   bool technique_given = false;  // --technique on the command line: it wins over a budget

@@ -129,6 +129,25 @@ TEST_F(FlightScriptTest, AntialiasingIsFourUnlessGivenAndAPowerOfTwo) {
   expect_error(write("bad2.json", with("32")), {"image.antialiasing", "out of range"});
 }
 
+TEST_F(FlightScriptTest, ExposureIsANumberOrAutoAndStarsAreOnUnlessTurnedOff) {
+  FlightScript fixed = load_flight_script(write("ok.json", script()));
+  EXPECT_FALSE(fixed.auto_exposure);
+  EXPECT_EQ(fixed.exposure, 8.0);
+  EXPECT_TRUE(fixed.stars);
+  const std::string automatic = script("\"exposure\": 8", "\"exposure\": \"auto\"");
+  EXPECT_TRUE(load_flight_script(write("auto.json", automatic)).auto_exposure);
+  FlightScript dark = load_flight_script(
+      write("dark.json", script("\"height\": 32", "\"height\": 32, \"stars\": false")));
+  EXPECT_FALSE(dark.stars);
+  expect_error(write("bad.json", script("\"exposure\": 8", "\"exposure\": \"bright\"")),
+               {"bad.json", "exposure", "\"auto\""});
+  // An automatic exposure leaves the keyframes none to give.
+  std::string keyed = automatic;
+  const std::string first = "\"heading_deg\": 90}";
+  keyed.replace(keyed.find(first), first.size(), "\"heading_deg\": 90, \"exposure\": 2}");
+  expect_error(write("bad2.json", keyed), {"keyframes[0].exposure", "\"auto\""});
+}
+
 TEST_F(FlightScriptTest, OutOfRangeLatitudeAndMissingField) {
   expect_error(write("bad.json", script("\"lat_deg\": 11", "\"lat_deg\": 91")),
                {"keyframes[2].lat_deg", "91", "out of range"});
