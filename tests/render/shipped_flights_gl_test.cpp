@@ -48,9 +48,10 @@ TEST_P(ShippedFlightGLTest, NoFrameIsBlackAndNoKeyframeIsUnderground) {
 
 INSTANTIATE_TEST_SUITE_P(Flights, ShippedFlightGLTest,
                          ::testing::Values("alps_sunset", "ascent", "asteroid_landing",
-                                           "earth_orbit_terminator", "governed_ascent",
-                                           "mars_crater_sunset", "mars_sunset", "moon_descent",
-                                           "terrain_asteroid", "terrain_earth", "terrain_mars"),
+                                           "alps_nightfall", "earth_orbit_terminator",
+                                           "governed_ascent", "mars_crater_sunset", "mars_sunset",
+                                           "moon_descent", "terrain_asteroid", "terrain_earth",
+                                           "terrain_mars"),
                          [](const auto& instance) { return instance.param; });
 
 }  // namespace
