@@ -1,5 +1,6 @@
 #include "render/frame.h"
 
+#include "atmosphere/atmosphere_inputs.h"
 #include "atmosphere/atmosphere_space.h"
 #include "atmosphere/gpu/atmosphere_block.h"
 #include "core/error.h"
@@ -138,9 +139,11 @@ void FrameRenderer::draw_stars(const Camera& camera, double exposure) {
   view.has_atmosphere = sky;
   if (sky) {
     // Radiance in W m^-2 sr^-1 nm^-1 under an atmosphere: the sun at 1 AU
-    // as data/planets/earth.json gives it (whatever the body's distance;
-    // the stars do not change with it).
-    view.sun_at_1au = glm::vec3(1.474f, 1.8504f, 1.91198f);
+    // at the model's wavelengths (whatever the body's distance; the stars
+    // do not change with it).
+    for (int c = 0; c < 3; ++c) {
+      view.sun_at_1au[c] = float(solar_irradiance_astm_g173(atmosphere_->wavelengths_nm[c]));
+    }
     view.atmo_scale = atmosphere_scale(body_.shape, atmosphere_->bottom_radius);
     view.scale = technique_->writes_display_values() ? float(exposure) : 1.0f;
     glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, atmosphere_block_.id());
@@ -156,7 +159,6 @@ void FrameRenderer::measure_exposure() {
     exposure_program_ = Program::compute("render/shaders/auto_exposure.comp");
   }
   glUseProgram(exposure_program_.id());
-  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
   glBindTextureUnit(0, radiance().id());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, exposure_block_.id());
   glUniform2i(exposure_program_.uniform("u_size"), width_, height_);
@@ -167,6 +169,7 @@ void FrameRenderer::measure_exposure() {
   glUniform1f(exposure_program_.uniform("u_cap"), 1.0f);
   glUniform2f(exposure_program_.uniform("u_bounds"), 0.1f, 1e4f);
   glDispatchCompute(1, 1, 1);
+  // The tone map reads the exposure from the buffer.
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   timer_.end();
 }

@@ -41,7 +41,6 @@ class StarField {
   // `depth` (the frame's reversed-Z depth, 0 where no surface) is empty.
   void draw(GLuint target, int width, int height, GLuint depth, const Camera& camera,
             const StarView& view) const;
-  int count() const { return count_; }
 
  private:
   Buffer vertices_;

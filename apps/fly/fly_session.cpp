@@ -310,6 +310,7 @@ HudView FlySession::hud_view(const Camera& cam, const glm::dvec3& sun, double re
   v.exposure = renderer_->last_exposure();
   v.lod_pixels = lod_pixels_;
   v.terrain_shadows = renderer_->terrain_shadows();
+  v.stars = renderer_->stars();
   return v;
 }
 

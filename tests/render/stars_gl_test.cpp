@@ -2,6 +2,7 @@
 // catalogue and the clock put it on, at its radiance dimmed by the air;
 // none below the horizon or in the day sky; the automatic exposure that
 // of the frame's mean luminance.
+#include "atmosphere/atmosphere_inputs.h"
 #include "atmosphere/atmosphere_space.h"
 #include "atmosphere/gpu/registry.h"
 #include "atmosphere/math/shared_math.h"
@@ -113,7 +114,7 @@ TEST(StarsGLTest, AtNightTheBrightStarsShineWhereTheCatalogueAndClockPutThem) {
     ++checked;
     // Its radiance over the eye's arcminute, dimmed by the air.
     const double t = transmittance_550(body_from_icrf(night.body, night.utc) * s.dir_icrf);
-    const float sun_550 = 1.8504f;
+    const float sun_550 = float(solar_irradiance_astm_g173(550.0));
     const float expected = float(star_radiance_per_sun(s.magnitude) * t) * sun_550;
     const float seen = on.hdr[i * 4 + 1] - none.hdr[i * 4 + 1];
     std::printf(
