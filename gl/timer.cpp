@@ -9,7 +9,7 @@ namespace planet {
 
 GpuTimer::~GpuTimer() {
   for (auto& p : pending_) {
-    if (!p.reused) free_.push_back(p.query);
+    if (!p.reused && !p.on_cpu) free_.push_back(p.query);
   }
   if (free_.empty()) return;
   glDeleteQueries(GLsizei(free_.size()), free_.data());
@@ -51,11 +51,22 @@ void GpuTimer::reuse(const std::string& pass) {
   pending_.push_back(p);
 }
 
+void GpuTimer::cpu(const std::string& pass, double ms) {
+  Pending p{pass, 0, std::chrono::steady_clock::now()};
+  p.on_cpu = true;
+  p.wall_ms = ms;
+  pending_.push_back(p);
+}
+
 std::vector<PassTiming> GpuTimer::collect() {
   std::vector<PassTiming> out;
   for (auto& p : pending_) {
     if (p.reused) {
       out.push_back({p.pass, 0.0, 0.0, true});
+      continue;
+    }
+    if (p.on_cpu) {
+      out.push_back({p.pass, p.wall_ms, p.wall_ms, false, true});
       continue;
     }
     GLuint64 ns = 0;

@@ -21,6 +21,8 @@ struct PassTiming {
   // The pass did not run: what it would have computed was still valid
   // from an earlier frame (its inputs had not changed), and was reused.
   bool reused = false;
+  // The pass ran on the CPU: gpu_ms and wall_ms hold its wall time.
+  bool on_cpu = false;
 };
 
 class GpuTimer {
@@ -40,6 +42,8 @@ class GpuTimer {
   // Records a pass that did not run this frame because its last result
   // still held: it is listed, at 0 ms, with `reused` set.
   void reuse(const std::string& pass);
+  // Records a pass that ran on the CPU, taking `ms` of wall time.
+  void cpu(const std::string& pass, double ms);
   // Waits for every pending query and returns the frame's passes in order,
   // then starts over.
   std::vector<PassTiming> collect();
@@ -51,6 +55,7 @@ class GpuTimer {
     std::chrono::steady_clock::time_point begun;
     double wall_ms = 0;
     bool reused = false;  // no query: the pass did not run
+    bool on_cpu = false;  // no query: wall_ms is its time
   };
   bool synchronous_ = false;
   std::vector<GLuint> free_;

@@ -15,6 +15,7 @@
 #endif
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -65,6 +66,8 @@ void FrameRenderer::set_body(const Body& body, std::optional<AtmosphereModel> at
   malloc_trim(0);
 #endif
 
+  shadow_field_ = std::make_unique<SunShadowField>();
+  shadow_uploaded_ = 0;
   if (atmosphere_) set_atmosphere(*atmosphere_);
   check_gl_errors("FrameRenderer::set_body");
 }
@@ -228,6 +231,50 @@ void FrameRenderer::blend_surface_edges(GLuint target, const char* pass) {
   timer_.end();
 }
 
+SkyTerrainShadow FrameRenderer::terrain_shadow(const glm::dvec3& camera_atmo,
+                                               const glm::dvec3& sun_atmo,
+                                               const glm::dvec3& atmo_scale) {
+  SkyTerrainShadow shadow;
+  const HeightRange relief = terrain_->surface().heights().range();
+  const double bottom = atmosphere_->bottom_radius;
+  const double altitude = glm::length(camera_atmo) - bottom;
+  const double fade = std::clamp((kTerrainShadowTop - altitude) / 20e3, 0.0, 1.0);
+  if (!terrain_shadows_ || relief.max <= relief.min || fade <= 0.0) return shadow;
+  // The field on the CPU and its upload, timed together.
+  const auto began = std::chrono::steady_clock::now();
+  shadow_field_->update(terrain_->surface(), atmo_scale, bottom, camera_atmo, sun_atmo);
+  const SunShadowField& field = *shadow_field_;
+  if (shadow_uploaded_ == field.version()) {
+    timer_.reuse("terrain_shadow");
+  } else {
+    const int n = field.patch().size;
+    if (!shadow_texture_.id()) {
+      shadow_texture_ = make_texture_2d(GL_R32F, n, n);
+      glTextureParameteri(shadow_texture_.id(), GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+      glTextureParameteri(shadow_texture_.id(), GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    }
+    glTextureSubImage2D(shadow_texture_.id(), 0, 0, 0, n, n, GL_RED, GL_FLOAT,
+                        field.shadow().data());
+    shadow_uploaded_ = field.version();
+    timer_.cpu("terrain_shadow", std::chrono::duration<double, std::milli>(
+                                     std::chrono::steady_clock::now() - began)
+                                     .count());
+  }
+  // A sun high enough leaves no shadow in the patch: nothing to draw.
+  if (!std::isfinite(field.highest_shadow())) return shadow;
+  const ShadowPatch& patch = field.patch();
+  shadow.texture = shadow_texture_.id();
+  shadow.highest = float(field.highest_shadow());
+  shadow.up = glm::vec3(patch.up);
+  shadow.east = glm::vec3(patch.east);
+  shadow.north = glm::vec3(patch.north);
+  shadow.bottom_radius = float(patch.bottom_radius);
+  shadow.half_side = float(patch.half_side);
+  shadow.strength = float(fade * fade * (3.0 - 2.0 * fade));
+  shadow.version = field.version();
+  return shadow;
+}
+
 void FrameRenderer::draw_atmosphere(const Camera& camera, const glm::dvec3& sun_dir_body,
                                     double exposure, AtmosphereTechnique& technique) {
   glm::dvec3 scale = atmosphere_scale(body_.shape, atmosphere_->bottom_radius);
@@ -251,6 +298,9 @@ void FrameRenderer::draw_atmosphere(const Camera& camera, const glm::dvec3& sun_
       view_pruning_ ? float(std::max(terrain_stats_.nearest_m + lowest, 0.0) * sky.atmo_scale_min)
                     : 0.0f;
   sky.view_pruning = view_pruning_;
+  if (technique.takes_terrain_shadow()) {
+    sky.terrain_shadow = terrain_shadow(sky.camera_atmo, glm::dvec3(sky.sun_dir_atmo), scale);
+  }
   sky.exposure = float(exposure);
   sky.depth_texture = depth_.id();
   sky.surface_texture = surface_.id();

@@ -13,6 +13,7 @@
 #include "sim/body.h"
 #include "sim/camera.h"
 #include "terrain/gpu/terrain_renderer.h"
+#include "terrain/sun_shadow_field.h"
 
 #include <cstdint>
 #include <memory>
@@ -20,6 +21,11 @@
 #include <vector>
 
 namespace planet {
+
+// The terrain's shadow in the air reaches a camera up to this altitude
+// above the bottom sphere (metres), fading out over the last 20 km: higher,
+// the shafts of a patch of ground are too small to show.
+constexpr double kTerrainShadowTop = 50e3;
 
 struct FrameStats {
   std::vector<PassTiming> passes;  // GPU time per pass
@@ -81,7 +87,11 @@ class FrameRenderer {
   // scattering alone, the frame is the first order, as `reference
   // --max-order 1` traces it.
   void set_surface_sky_light(bool on) { surface_sky_light_ = on; }
-  // False: the terrain casts no shadow from the sun (the default is on).
+  // False: the terrain casts no shadow from the sun, on the ground or in
+  // the air (the default is on). Its shadow in the air is computed up to
+  // kTerrainShadowTop above the bottom sphere (fading out over the last
+  // 20 km) and drawn by the techniques that take it (their
+  // terrain_shadows quality parameter).
   void set_terrain_shadows(bool on) { terrain_shadows_ = on; }
   bool terrain_shadows() const { return terrain_shadows_; }
 
@@ -136,6 +146,12 @@ class FrameRenderer {
   // timed as `pass`.
   void blend_surface_edges(GLuint target, const char* pass);
 
+  // The terrain's shadow in the air for this frame (none when off, over a
+  // smooth body or high up), computed when the camera's patch or the sun
+  // moved, timed as the pass "terrain_shadow".
+  SkyTerrainShadow terrain_shadow(const glm::dvec3& camera_atmo, const glm::dvec3& sun_atmo,
+                                  const glm::dvec3& atmo_scale);
+
   // The stars, then the automatic exposure, into the frame's radiance.
   void draw_stars(const Camera& camera, double exposure);
   void measure_exposure();
@@ -162,6 +178,9 @@ class FrameRenderer {
   bool surface_sky_light_ = true;
   bool terrain_shadows_ = true;
   bool view_pruning_ = true;
+  std::unique_ptr<SunShadowField> shadow_field_;  // made by set_body
+  Texture shadow_texture_;
+  uint64_t shadow_uploaded_ = 0;  // the field's version the texture holds
 
   Body body_;
   std::optional<AtmosphereModel> atmosphere_;

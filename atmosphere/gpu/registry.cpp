@@ -17,6 +17,11 @@ namespace planet {
 
 namespace {
 
+// The terrain's shadow in the air: light shafts, shadowed haze.
+const QualityParameter kTerrainShadowsParameter = {
+    "terrain_shadows", "the terrain's shadow in the air (light shafts, shadowed haze)", 0, 1, 1,
+    true, {"off", "on"}};
+
 std::vector<QualityParameter> hillaire_quality() {
   return {
       {"sky_view_steps", "march steps per texel of the sky-view LUT", 4, 128, 30, true, {}},
@@ -43,6 +48,7 @@ std::vector<QualityParameter> hillaire_quality() {
        1,
        true,
        {"off", "on"}},
+      kTerrainShadowsParameter,
   };
 }
 
@@ -56,6 +62,7 @@ std::unique_ptr<AtmosphereTechnique> make_hillaire(const TechniqueChoice& c,
   s.aerial_range = c.value("aerial_range_km") * 1e3;
   s.path = HillaireTechnique::Path(c.integer("path"));
   s.multiple = c.integer("multiple") == 1;
+  s.terrain_shadows = c.integer("terrain_shadows") == 1;
   return std::make_unique<HillaireTechnique>(s);
 }
 
@@ -101,14 +108,15 @@ std::vector<TechniqueEntry> make_registry() {
        "Nishita et al. 1993",
        "single scattering by a nested ray march per pixel: the brute-force baseline",
        {{"view_steps", "march steps along each pixel's ray", 1, 512, 32, true, {}},
-        {"light_steps", "march steps toward the sun at each of them", 1, 256, 16, true, {}}},
+        {"light_steps", "march steps toward the sun at each of them", 1, 256, 16, true, {}},
+        kTerrainShadowsParameter},
        {{"cheap", "view_steps=8,light_steps=4"},
         {"default", ""},
         {"fine", "view_steps=128,light_steps=64"}},
        "",
        [](const TechniqueChoice& c) {
-         return std::make_unique<RaymarchTechnique>(
-             RaymarchTechnique::Steps{c.integer("view_steps"), c.integer("light_steps")});
+         return std::make_unique<RaymarchTechnique>(RaymarchTechnique::Steps{
+             c.integer("view_steps"), c.integer("light_steps"), c.integer("terrain_shadows") == 1});
        }},
       {"hillaire", "ours, on Hillaire 2020's tables",
        "transmittance, multiple-scattering (six orders to spherical-harmonic degree 4 and a "

@@ -9,6 +9,7 @@
 #include <epoxy/gl.h>
 #include <glm/glm.hpp>
 
+#include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
@@ -17,6 +18,23 @@ namespace planet {
 
 struct PassTiming;
 class GpuTimer;
+
+// The terrain's shadow in the air for a frame (terrain/sun_shadow_field.h):
+// an R32F texture of shadow heights (metres above the bottom sphere) over a
+// gnomonic patch of atmosphere space about `up`, read by
+// atmosphere/gpu/terrain_shadow.glsl. No texture: the frame has none (no
+// relief, shadows turned off, a sun too high to leave any, or the camera
+// high above the ground).
+struct SkyTerrainShadow {
+  GLuint texture = 0;
+  glm::vec3 up{0, 0, 1}, east{1, 0, 0}, north{0, 1, 0};
+  float bottom_radius = 0;
+  float half_side = 0;  // metres from the patch's centre to its edge
+  float strength = 0;   // 1: the whole shadow; fades to 0 as the camera rises
+  float highest = 0;    // no shadow reaches above this altitude
+  uint64_t version = 0;  // changes whenever the texture's contents do
+  bool active() const { return texture != 0 && strength > 0.0f; }
+};
 
 // What a technique needs to know of a frame. "Atmosphere space" is the
 // body frame scaled so that the body's ellipsoid becomes the atmosphere's
@@ -46,6 +64,7 @@ struct SkyFrame {
   // The frame's tone-mapping exposure, for a technique that maps radiance
   // to display values itself (see writes_display_values).
   float exposure = 1.0f;
+  SkyTerrainShadow terrain_shadow;
   // Inputs: reversed-Z depth (0 where nothing opaque was drawn) and the
   // radiance leaving opaque surfaces toward the camera, before the
   // atmosphere between them and the camera.
@@ -81,6 +100,9 @@ class AtmosphereTechnique {
   // itself (O'Neil's 1 - exp(-exposure L)), not radiance: the frame's tone
   // map then passes them through unchanged.
   virtual bool writes_display_values() const { return false; }
+  // The technique draws the terrain's shadow in the air from the frame's
+  // SkyTerrainShadow: only then does a frame compute one.
+  virtual bool takes_terrain_shadow() const { return false; }
 };
 
 }  // namespace planet

@@ -40,6 +40,8 @@ Real3 scattering_order_lookup(Real u, Real v, int part);
 Real3 ground_order_lookup(IN(Atmosphere) atmosphere, Real mu_s);
 Real forward_gain_lookup(IN(Atmosphere) atmosphere, Real nu, Real tau);
 Real mie_column_lookup(IN(Atmosphere) atmosphere, Real r, Real mu);
+// The CPU's skies have no terrain.
+Real terrain_sun_visibility(IN(Real3)) { return Real(1.0); }
 
 // In this order, each file using the ones before it.
 // clang-format off

@@ -25,6 +25,11 @@
 //   Real forward_gain_lookup(IN(Atmosphere), Real nu, Real tau)
 //       forward_gain_times_extinction (see "The sun's glow past the
 //       table's degree"), or zero where a technique leaves the gain out
+//   Real terrain_sun_visibility(IN(Real3) p)
+//       1 where the terrain leaves the sun in view of the point p, 0 in
+//       its shadow (terrain_shadow.glsl; 1 on the CPU and in the LUTs)
+// and, with TERRAIN_SHADOW_LOSS defined, a Real3 terrain_shadow_loss that
+// the sun's light the terrain took away along the ray is added to.
 // On the GPU these sample the LUTs; on the CPU they integrate directly or
 // read tables.
 
@@ -228,12 +233,20 @@ void accumulate_segment(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, Rea
     if (source_kind == kSourceIsotropicSun) {
       source = sun * sigma_s * isotropic_phase();
     } else {
-      source = sun * (sigma_r * phase_r + sigma_m * phase_m);
+      Real3 direct = sun * (sigma_r * phase_r + sigma_m * phase_m);
       // The glow needs the sun: no lookups in the planet's shadow.
       if (source_kind == kSourceSky && sun.x + sun.y + sun.z > Real(0.0)) {
         Real3 tau_sun = atmosphere.mie_scattering * mie_column_lookup(atmosphere, r, mu_s);
-        source += sun * sigma_m * forward_gain(atmosphere, dot(d, sun_dir), tau_sun);
+        direct += sun * sigma_m * forward_gain(atmosphere, dot(d, sun_dir), tau_sun);
       }
+      // Where the terrain hides the sun, its own light goes; the light the
+      // air scattered more than once still comes from the whole sky.
+      Real lit = terrain_sun_visibility(p);
+      source = lit * direct;
+#ifdef TERRAIN_SHADOW_LOSS
+      terrain_shadow_loss += throughput * ds * one_minus_exp_over_x3(extinction * ds) *
+                             (Real(1.0) - lit) * direct;
+#endif
       if (source_kind == kSourceSky) {
         source += scattered_field(atmosphere, false, r, mu_s, sigma_r, sigma_m, p, d, sun_dir);
         // The glow's gain and the field's moments are truncated series:

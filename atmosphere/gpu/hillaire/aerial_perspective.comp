@@ -1,13 +1,23 @@
 // Hillaire 2020, sec. 5.4: in-scattering and transmittance from the camera
-// to the centre of each of 32 depth slices, for 32 x 32 screen columns.
+// to the centre of each of 32 depth slices, for 32 x 32 screen columns
+// (and with the terrain's shadow, the sunlight it took away on the way).
 // One invocation marches its column once, slice after slice. The
 // transmittance is kept per channel (RGB), not as a mean, so that distant
 // ground turns blue-grey and a low sun's red comes through.
+#ifdef TERRAIN_SHADOW_LOSS
+// The sun's light the terrain's shadow took from the march so far
+// (hillaire_functions.glsl adds to it): the open sky, drawn from the
+// sky-view LUT that knows no terrain, takes it off.
+vec3 terrain_shadow_loss = vec3(0.0);
+#endif
 #include "atmosphere/gpu/hillaire/hillaire_common.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba16f, binding = 0) uniform writeonly image3D u_scattering;
 layout(rgba16f, binding = 1) uniform writeonly image3D u_transmittance;
+#ifdef TERRAIN_SHADOW_LOSS
+layout(rgba16f, binding = 2) uniform writeonly image3D u_shadow_loss;
+#endif
 
 uniform vec3 u_camera;  // atmosphere space, lifted above the ground
 uniform mat3 u_ray_from_ndc;
@@ -46,5 +56,8 @@ void main() {
     ivec3 froxel = ivec3(column, k);
     imageStore(u_scattering, froxel, vec4(luminance, 1.0));
     imageStore(u_transmittance, froxel, vec4(throughput, 1.0));
+#ifdef TERRAIN_SHADOW_LOSS
+    imageStore(u_shadow_loss, froxel, vec4(terrain_shadow_loss, 1.0));
+#endif
   }
 }

@@ -11,6 +11,7 @@ Real3 scattering_order_lookup(Real u, Real v, int part);
 Real3 ground_order_lookup(IN(Atmosphere) atmosphere, Real mu_s);
 Real forward_gain_lookup(IN(Atmosphere) atmosphere, Real nu, Real tau);
 
+#include "atmosphere/gpu/terrain_shadow.glsl"
 #include "atmosphere/shaders/sunlight.glsl"
 #include "atmosphere/shaders/ground.glsl"
 #include "atmosphere/shaders/hillaire_luts.glsl"

@@ -1,8 +1,9 @@
 // Hillaire 2020, sec. 5.3-5.6: the sky, the sun disk and the aerial
 // perspective over the opaque surfaces. Two paths, weighted by
 // u_lut_weight, which the technique sets from the camera's altitude:
-//  - the LUT path (inside the atmosphere): the sky-view LUT for open sky,
-//    the froxel volume for surfaces within its range and a per-pixel march
+//  - the LUT path (inside the atmosphere): the sky-view LUT for open sky
+//    (less what the terrain's shadow takes within the froxels' range), the
+//    froxel volume for surfaces within its range and a per-pixel march
 //    beyond it;
 //  - the per-pixel path (high up and in space): a march of every pixel with
 //    the same multiple-scattering LUT.
@@ -29,6 +30,12 @@ uniform vec2 u_viewport;
 uniform mat3 u_local_from_atmo;  // rows: toward the sun's azimuth, across, up
 uniform float u_lut_weight;
 uniform float u_aerial_range;
+#ifdef TERRAIN_SHADOWS
+// The sunlight the terrain's shadow took from each froxel's ray
+// (aerial_perspective.comp), weighted 0 when the froxels have no shadow.
+layout(binding = 10) uniform sampler3D u_aerial_shadow_loss;
+uniform float u_shadow_loss_weight;
+#endif
 
 // The march's steps, from the optical depth of the whole ray through the
 // air (its worst channel, from the transmittance LUT; a ray that ends at
@@ -156,6 +163,15 @@ void main() {
       float u, v;
       sky_view_lut_uv_from_view(atmosphere, u_sky_view_r, local.z, atan(local.y, local.x), u, v);
       lut_radiance = texture(u_sky_view_lut, vec2(u, v)).rgb * atmosphere.solar_irradiance;
+#ifdef TERRAIN_SHADOWS
+      // The sky-view LUT knows no terrain: take off the sunlight that the
+      // terrain's shadow took within the froxels' range (their last slice).
+      vec3 loss = texture(u_aerial_shadow_loss,
+                          vec3(gl_FragCoord.xy / u_viewport,
+                               1.0 - 0.5 / float(kAerialPerspectiveSize))).rgb;
+      lut_radiance = max(lut_radiance - u_shadow_loss_weight * loss * atmosphere.solar_irradiance,
+                         vec3(0.0));
+#endif
       if (open_sky) {
         float mu = dot(camera, dir) / length(camera);
         lut_radiance += sun_disk(dir, transmittance_lookup(atmosphere, u_camera_r, mu));

@@ -1,6 +1,7 @@
 #include "atmosphere/gpu/hillaire/hillaire_technique.h"
 
 #include "atmosphere/gpu/atmosphere_block.h"
+#include "atmosphere/gpu/terrain_shadow.h"
 #include "atmosphere/math/hillaire_math.h"
 #include "atmosphere/screen_bound.h"
 #include "gl/timer.h"
@@ -51,13 +52,23 @@ void bind_image(GLuint unit, GLuint texture, GLenum format, bool layered) {
 // The passes that draw the view take the forward gain from its LUT; the
 // paper's form goes without, as the paper has it.
 std::vector<std::string> view_defines(const HillaireTechnique::Settings& settings,
-                                      std::string define) {
+                                      std::string define,
+                                      std::vector<std::string> shadow_defines = {}) {
   std::vector<std::string> defines = {std::move(define)};
   if (settings.multiple_scattering == HillaireTechnique::MultipleScattering::kOrders) {
     defines.push_back("FORWARD_GAIN_LUT 1");
   }
+  if (settings.terrain_shadows) {
+    defines.insert(defines.end(), shadow_defines.begin(), shadow_defines.end());
+  }
   return defines;
 }
+
+// Texture unit of the froxels' shadow loss in the sky pass.
+constexpr GLuint kShadowLossUnit = 10;
+// terrain_shadow.glsl's kShadowSoftness: the sun comes in over these
+// metres above a shadow's height.
+constexpr double kShadowSoftness = 60.0;
 
 // Rounds x to the nearest multiple of step (none when step is 0).
 double quantize(double x, double step) { return step > 0.0 ? std::round(x / step) * step : x; }
@@ -101,10 +112,12 @@ HillaireTechnique::HillaireTechnique(Settings settings)
           view_defines(settings, fmt::format("SKY_VIEW_STEPS {}", settings.sky_view_steps)))),
       aerial_program_(Program::compute(
           "atmosphere/gpu/hillaire/aerial_perspective.comp",
-          view_defines(settings, fmt::format("AERIAL_SUBSTEPS {}", settings.aerial_substeps)))),
+          view_defines(settings, fmt::format("AERIAL_SUBSTEPS {}", settings.aerial_substeps),
+                       {"TERRAIN_SHADOWS 1", "TERRAIN_SHADOW_LOSS 1"}))),
       sky_program_(Program::graphics(
           "gl/shaders/fullscreen.vert", "atmosphere/gpu/hillaire/hillaire_sky.frag",
-          view_defines(settings, fmt::format("PER_PIXEL_STEPS {}", settings.per_pixel_steps)))),
+          view_defines(settings, fmt::format("PER_PIXEL_STEPS {}", settings.per_pixel_steps),
+                       {"TERRAIN_SHADOWS 1"}))),
       space_program_(Program::graphics("gl/shaders/fullscreen.vert", "atmosphere/gpu/space.frag")),
       transmittance_lut_(make_texture_2d(GL_RGBA32F, shared::kTransmittanceLutWidth,
                                          shared::kTransmittanceLutHeight)),
@@ -122,6 +135,9 @@ HillaireTechnique::HillaireTechnique(Settings settings)
       aerial_transmittance_(make_texture_3d(GL_RGBA16F, shared::kAerialPerspectiveSize,
                                             shared::kAerialPerspectiveSize,
                                             shared::kAerialPerspectiveSize)),
+      aerial_shadow_loss_(make_texture_3d(GL_RGBA16F, shared::kAerialPerspectiveSize,
+                                          shared::kAerialPerspectiveSize,
+                                          shared::kAerialPerspectiveSize)),
       block_(make_buffer(sizeof(AtmosphereBlock), nullptr)) {
   static_assert(hillaire::kScatteringOrders == int(std::tuple_size_v<decltype(order_luts_)>),
                 "one table per order of scattering");
@@ -142,6 +158,7 @@ HillaireTechnique::HillaireTechnique(Settings settings)
   // are, and the sky pass reads them with a weight of zero: never garbage.
   glClearTexImage(aerial_scattering_.id(), 0, GL_RGBA, GL_FLOAT, zero);
   glClearTexImage(aerial_transmittance_.id(), 0, GL_RGBA, GL_FLOAT, zero);
+  glClearTexImage(aerial_shadow_loss_.id(), 0, GL_RGBA, GL_FLOAT, zero);
 }
 
 void HillaireTechnique::update(const AtmosphereModel& model) {
@@ -280,21 +297,42 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   // up; near the ground, where a tile's bound holds the camera, the depth
   // of the pixels does.
   const glm::vec3 camera_f(camera);
-  const bool surfaces_in_range =
+  // With the terrain's shadow, the froxels also carry the sunlight it takes
+  // from the open sky, which the sky-view LUT knows nothing of, unless no
+  // ray can pass through a shadow: the camera above the highest shadow,
+  // and no ray of the frame pointing down (an upward ray only climbs).
+  const bool shadow = settings_.terrain_shadows && frame.terrain_shadow.active();
+  bool sky_shadow = shadow && lut_weight_ > 0.0;
+  if (sky_shadow && frame.view_pruning &&
+      altitude > double(frame.terrain_shadow.highest) + kShadowSoftness) {
+    const glm::vec3 up(camera / glm::length(camera));
+    bool downward = false;
+    for (float x : {-1.0f, 1.0f}) {
+      for (float y : {-1.0f, 1.0f}) {
+        downward = downward || glm::dot(frame.atmo_ray_from_ndc * glm::vec3(x, y, 1.0f), up) < 0.0f;
+      }
+    }
+    sky_shadow = downward;
+  }
+  const bool froxels_needed =
       lut_weight_ > 0.0 &&
-      (!frame.view_pruning ||
+      (sky_shadow || !frame.view_pruning ||
        (frame.nearest_surface <= aerial_range_ &&
        (frame.depth_texture == 0 ||
         surface_probe_.any_nearer(frame.depth_texture, frame.width, frame.height, frame.near,
                                   float(aerial_range_) / frame.atmo_scale_min))));
-  if (surfaces_in_range &&
+  if (froxels_needed &&
       !inputs_.changed("aerial_perspective", PassKey(model_key_)
                                                  .add(camera_f)
                                                  .add(frame.atmo_ray_from_ndc)
                                                  .add(frame.sun_dir_atmo)
-                                                 .add(float(aerial_range_)))) {
+                                                 .add(float(aerial_range_))
+                                                 .add(shadow)
+                                                 .add(shadow ? frame.terrain_shadow.version : 0)
+                                                 .add(shadow ? frame.terrain_shadow.strength
+                                                             : 0.0f))) {
     timer.reuse("aerial_perspective");
-  } else if (surfaces_in_range) {
+  } else if (froxels_needed) {
     timer.begin("aerial_perspective");
     aerial_program_.use();
     glUniform3fv(aerial_program_.uniform("u_camera"), 1, glm::value_ptr(camera_f));
@@ -304,6 +342,10 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
     glUniform1f(aerial_program_.uniform("u_range"), float(aerial_range_));
     bind_image(0, aerial_scattering_.id(), GL_RGBA16F, true);
     bind_image(1, aerial_transmittance_.id(), GL_RGBA16F, true);
+    if (settings_.terrain_shadows) {
+      bind_image(2, aerial_shadow_loss_.id(), GL_RGBA16F, true);
+      bind_terrain_shadow(aerial_program_, frame.terrain_shadow);
+    }
     glDispatchCompute(groups(shared::kAerialPerspectiveSize),
                       groups(shared::kAerialPerspectiveSize), 1);
     glMemoryBarrier(kLutBarrier);
@@ -379,6 +421,11 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
                      glm::value_ptr(glm::mat3(local)));
   glUniform1f(sky_program_.uniform("u_lut_weight"), float(lut_weight_));
   glUniform1f(sky_program_.uniform("u_aerial_range"), float(aerial_range_));
+  if (settings_.terrain_shadows) {
+    bind_terrain_shadow(sky_program_, frame.terrain_shadow);
+    glBindTextureUnit(kShadowLossUnit, aerial_shadow_loss_.id());
+    glUniform1f(sky_program_.uniform("u_shadow_loss_weight"), sky_shadow ? 1.0f : 0.0f);
+  }
   sky_pass_.draw();
   glDisable(GL_SCISSOR_TEST);
   timer.end();

@@ -36,6 +36,9 @@ class HillaireTechnique final : public AtmosphereTechnique {
     // light on the ground, no forward glow), to be measured against the
     // ground truth's first order.
     bool multiple = true;
+    // The terrain's shadow in the air (the frame's shadow-height field): in
+    // the froxels and the per-pixel march, and taken off the open sky.
+    bool terrain_shadows = true;
     int sky_view_steps = 30;
     int per_pixel_steps = 40;
     int aerial_substeps = 2;     // per froxel slice
@@ -75,6 +78,7 @@ class HillaireTechnique final : public AtmosphereTechnique {
                : 0;
   }
 
+  bool takes_terrain_shadow() const override { return settings_.terrain_shadows; }
   const Settings& settings() const { return settings_; }
   // Weight of the LUT path in the last frame (1: LUTs only, 0: per pixel).
   double lut_weight() const { return lut_weight_; }
@@ -115,7 +119,7 @@ class HillaireTechnique final : public AtmosphereTechnique {
       next_order_program_, orders_sum_program_, forward_gain_program_, sky_view_program_,
       aerial_program_, sky_program_, space_program_;
   Texture transmittance_lut_, multiple_scattering_lut_, ground_irradiance_lut_, forward_gain_lut_,
-      sky_view_lut_, aerial_scattering_, aerial_transmittance_;
+      sky_view_lut_, aerial_scattering_, aerial_transmittance_, aerial_shadow_loss_;
   std::array<Texture, 6> order_luts_;  // kScatteringOrders
   Buffer block_;
   FullscreenPass sky_pass_;

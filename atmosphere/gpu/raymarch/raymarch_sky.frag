@@ -1,6 +1,6 @@
 // Nishita et al. 1993, single scattering by nested ray marching: along the
 // view ray, VIEW_STEPS samples; at each, LIGHT_STEPS samples toward the sun
-// for its transmittance. Also composites the opaque surfaces behind the
+// for its transmittance, and the terrain's shadow (terrain_shadow.glsl). Also composites the opaque surfaces behind the
 // atmosphere (aerial perspective), and draws the sun disk and the ground
 // where no surface was drawn as every technique does (sun.glsl, ground.glsl).
 #include "atmosphere/shaders/atmosphere_block.glsl"
@@ -10,6 +10,7 @@ Real3 transmittance_lookup(IN(Atmosphere) atmosphere, Real r, Real mu) {
   return transmittance_to_top(atmosphere, r, mu, LIGHT_STEPS);
 }
 #include "atmosphere/shaders/sunlight.glsl"
+#include "atmosphere/gpu/terrain_shadow.glsl"
 #include "atmosphere/shaders/ground.glsl"
 #include "atmosphere/gpu/sky_pixel.glsl"
 
@@ -68,7 +69,8 @@ void main() {
       vec3 extinction = extinction_at(atmosphere, altitude);
       vec3 transmittance_to_camera = exp(-(optical_depth + 0.5 * extinction * ds));
       optical_depth += extinction * ds;
-      vec3 transmittance_to_sun = sun_visibility(atmosphere, r, dot(p, u_sun_dir) / r);
+      vec3 transmittance_to_sun =
+          sun_visibility(atmosphere, r, dot(p, u_sun_dir) / r) * terrain_sun_visibility(p);
       vec3 scattering =
           atmosphere.rayleigh_scattering *
               profile_density(atmosphere.rayleigh_density, altitude) * phase_r +

@@ -1,6 +1,7 @@
 #include "atmosphere/gpu/raymarch/raymarch_technique.h"
 
 #include "atmosphere/gpu/atmosphere_block.h"
+#include "atmosphere/gpu/terrain_shadow.h"
 #include "gl/timer.h"
 
 #include <fmt/format.h>
@@ -8,11 +9,22 @@
 
 namespace planet {
 
+namespace {
+
+std::vector<std::string> raymarch_defines(const RaymarchTechnique::Steps& steps) {
+  std::vector<std::string> defines = {fmt::format("VIEW_STEPS {}", steps.view),
+                                      fmt::format("LIGHT_STEPS {}", steps.light)};
+  if (steps.terrain_shadows) defines.push_back("TERRAIN_SHADOWS 1");
+  return defines;
+}
+
+}  // namespace
+
 RaymarchTechnique::RaymarchTechnique(Steps steps)
     : steps_(steps),
-      program_(Program::graphics(
-          "gl/shaders/fullscreen.vert", "atmosphere/gpu/raymarch/raymarch_sky.frag",
-          {fmt::format("VIEW_STEPS {}", steps.view), fmt::format("LIGHT_STEPS {}", steps.light)})),
+      program_(Program::graphics("gl/shaders/fullscreen.vert",
+                                 "atmosphere/gpu/raymarch/raymarch_sky.frag",
+                                 raymarch_defines(steps))),
       block_(make_buffer(sizeof(AtmosphereBlock), nullptr)) {}
 
 void RaymarchTechnique::update(const AtmosphereModel& model) {
@@ -33,6 +45,7 @@ void RaymarchTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   glUniform3fv(program_.uniform("u_sun_dir"), 1, glm::value_ptr(frame.sun_dir_atmo));
   glUniform1f(program_.uniform("u_near"), frame.near);
   glUniform2f(program_.uniform("u_viewport"), float(frame.width), float(frame.height));
+  if (steps_.terrain_shadows) bind_terrain_shadow(program_, frame.terrain_shadow);
   pass_.draw();
   timer.end();
 }

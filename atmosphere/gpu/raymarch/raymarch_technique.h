@@ -14,6 +14,8 @@ class RaymarchTechnique final : public AtmosphereTechnique {
   struct Steps {
     int view = 32;
     int light = 16;
+    // The terrain's shadow in the air (the frame's shadow-height field).
+    bool terrain_shadows = true;
   };
   explicit RaymarchTechnique(Steps steps);
   RaymarchTechnique() : RaymarchTechnique(Steps{}) {}
@@ -21,6 +23,7 @@ class RaymarchTechnique final : public AtmosphereTechnique {
   std::string name() const override { return "raymarch"; }
   void update(const AtmosphereModel& model) override;
   void render(const SkyFrame& frame, GpuTimer& timer) override;
+  bool takes_terrain_shadow() const override { return steps_.terrain_shadows; }
 
  private:
   Steps steps_;
