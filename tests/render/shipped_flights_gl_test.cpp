@@ -47,7 +47,7 @@ TEST_P(ShippedFlightGLTest, NoFrameIsBlackAndNoKeyframeIsUnderground) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Flights, ShippedFlightGLTest,
-                         ::testing::Values("alps_sunset", "ascent", "asteroid_landing",
+                         ::testing::Values("alps_shafts", "alps_sunset", "ascent", "asteroid_landing",
                                            "alps_nightfall", "earth_orbit_terminator",
                                            "governed_ascent", "mars_crater_sunset", "mars_sunset",
                                            "moon_descent", "terrain_asteroid", "terrain_earth",
