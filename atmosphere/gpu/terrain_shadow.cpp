@@ -13,6 +13,7 @@ void bind_terrain_shadow(const Program& program, const SkyTerrainShadow& shadow)
   glUniform2f(program.uniform("u_shadow_plane"), shadow.bottom_radius,
               on ? shadow.half_side : 1.0f);
   glUniform1f(program.uniform("u_shadow_strength"), on ? shadow.strength : 0.0f);
+  glUniform1f(program.uniform("u_shadow_softness"), kTerrainShadowSoftness);
 }
 
 }  // namespace planet

@@ -10,6 +10,9 @@ namespace planet {
 
 // Texture unit of the shadow heights (terrain_shadow.glsl's binding).
 constexpr GLuint kTerrainShadowUnit = 9;
+// The sun comes in over these metres of altitude above a shadow's height
+// (its disc, and the field's cells).
+constexpr float kTerrainShadowSoftness = 60.0f;
 
 // The program must be in use.
 void bind_terrain_shadow(const Program& program, const SkyTerrainShadow& shadow);

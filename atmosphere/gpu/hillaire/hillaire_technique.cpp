@@ -66,9 +66,6 @@ std::vector<std::string> view_defines(const HillaireTechnique::Settings& setting
 
 // Texture unit of the froxels' shadow loss in the sky pass.
 constexpr GLuint kShadowLossUnit = 10;
-// terrain_shadow.glsl's kShadowSoftness: the sun comes in over these
-// metres above a shadow's height.
-constexpr double kShadowSoftness = 60.0;
 
 // Rounds x to the nearest multiple of step (none when step is 0).
 double quantize(double x, double step) { return step > 0.0 ? std::round(x / step) * step : x; }
@@ -304,7 +301,7 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   const bool shadow = settings_.terrain_shadows && frame.terrain_shadow.active();
   bool sky_shadow = shadow && lut_weight_ > 0.0;
   if (sky_shadow && frame.view_pruning &&
-      altitude > double(frame.terrain_shadow.highest) + kShadowSoftness) {
+      altitude > double(frame.terrain_shadow.highest) + kTerrainShadowSoftness) {
     const glm::vec3 up(camera / glm::length(camera));
     bool downward = false;
     for (float x : {-1.0f, 1.0f}) {
