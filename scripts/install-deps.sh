@@ -26,6 +26,9 @@ packages=(
   # the hardening builds (scripts/hardening.sh): clang with its sanitizer and
   # libFuzzer runtimes
   clang libclang-rt-14-dev
+  # Earth's day and night imagery (NASA's Blue Marble and city lights;
+  # optional at run time: without it Earth has its palette's colours)
+  xplanet-images
   # the lab's charts (scripts/lab_report.py), and the browser its test opens the report in
   python3-matplotlib chromium
 )

@@ -1,9 +1,11 @@
 #include "terrain/procedural_height.h"
 
 #include "terrain/noise.h"
+#include "terrain/surface_maps.h"
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace planet {
 
@@ -57,6 +59,17 @@ constexpr double kRidgeRounding = 0.1;
 constexpr double kRidgedMaxCurvature =
     4.0 * (kNoiseMaxSlope * kNoiseMaxSlope +
            2.0 * kNoiseMaxSlope * kNoiseMaxSlope / kRidgeRounding + kNoiseMaxCurvature);
+
+// A ramp rounded over [-k, k]: 0 below, x above, a parabola between
+// (slope in [0, 1], curvature 1 / (2 k)).
+double soft_ramp(double x, double k) {
+  if (x <= -k) return 0.0;
+  if (x >= k) return x;
+  return (x + k) * (x + k) / (4.0 * k);
+}
+
+// Where the map's land mask turns noise from sea to land.
+constexpr double kLandEdge0 = 0.3, kLandEdge1 = 0.7;
 
 uint32_t cell_hash(int64_t x, int64_t y, int64_t z, uint32_t seed) {
   uint64_t h = uint64_t(x) * 0xD6E8FEB86659FD93ull ^ uint64_t(y) * 0xA0761D6478BD642Full ^
@@ -116,8 +129,34 @@ ProceduralHeight::ProceduralHeight(double radius, std::vector<NoiseLayer> layers
                    : a;
     });
   }
-  range_ = {offset_ - total, offset_ + total};
+  raw_range_ = {offset_ - total, offset_ + total};
+  range_ = raw_range_;
   if (sea_level_) range_.min = std::max(range_.min, *sea_level_);
+}
+
+void ProceduralHeight::set_land_mask(std::shared_ptr<const SurfaceMaps> maps) {
+  if (maps && !sea_level_) throw std::logic_error("terrain: a land mask needs a sea level");
+  maps_ = std::move(maps);
+  range_ = maps_ ? shaped_range(raw_range_, 0.0, 1.0) : raw_range_;
+  if (sea_level_) range_.min = std::max(range_.min, *sea_level_);
+}
+
+double ProceduralHeight::shaped(double h, double land) const {
+  const double land_floor = *sea_level_ + kLandAbove, sea_ceiling = *sea_level_ - kSeaBelow;
+  double up = h + soft_ramp(land_floor - h, kSoftening);
+  double down = h - soft_ramp(h - sea_ceiling, kSoftening);
+  // Settled land and sea take their bend alone, to the bit.
+  double t = smoothstep(kLandEdge0, kLandEdge1, land);
+  if (t == 1.0) return up;
+  if (t == 0.0) return down;
+  return down + t * (up - down);
+}
+
+HeightRange ProceduralHeight::shaped_range(HeightRange r, double land_min,
+                                           double land_max) const {
+  // shaped() grows with h (both bends do, and so their blend) and with
+  // land (up is never below down).
+  return {shaped(r.min, land_min), shaped(r.max, land_max)};
 }
 
 double ProceduralHeight::raw_height(const glm::dvec3& p) const {
@@ -150,6 +189,7 @@ double ProceduralHeight::raw_height(const glm::dvec3& p) const {
 
 double ProceduralHeight::height(const glm::dvec3& dir_body) const {
   double h = raw_height(dir_body * radius_);
+  if (maps_) h = shaped(h, maps_->land(dir_body));
   return sea_level_ ? std::max(h, *sea_level_) : h;
 }
 
@@ -176,7 +216,13 @@ HeightRange ProceduralHeight::range_near(const glm::dvec3& dir_body, double radi
     });
   }
   double h = raw_height(dir_body * radius_);
-  HeightRange r{std::max(h - spread, range_.min), std::min(h + spread, range_.max)};
+  HeightRange r{std::max(h - spread, raw_range_.min), std::min(h + spread, raw_range_.max)};
+  if (maps_) {
+    // Far from any coast the mask is one value over the whole patch.
+    bool one_value = maps_->distance_to_coast(dir_body) > radius;
+    double land = one_value ? maps_->land(dir_body) : 0.0;
+    r = shaped_range(r, land, one_value ? land : 1.0);
+  }
   if (sea_level_) {
     r.min = std::max(r.min, *sea_level_);
     r.max = std::max(r.max, *sea_level_);
@@ -211,7 +257,37 @@ double ProceduralHeight::interpolation_error(double spacing) const {
       }
     });
   }
+  if (maps_) e += land_mask_error(spacing);
   return e;
+}
+
+double ProceduralHeight::land_mask_error(double spacing) const {
+  // shaped(h, land) = down(h) + t(land) (up(h) - down(h)). The bends have
+  // slope at most 1 and curvature 1 / (2 k), which adds (dh)^2 / (16 k)
+  // for a noise that changes by dh over the spacing; the blend adds the
+  // gap G = up - down times t's own error, plus the cross term of t's and
+  // the gap's changes over the spacing.
+  double slope = 0;
+  for (const NoiseLayer& layer : layers_) {
+    for_each_octave(layer, [&](int, double a, double freq) {
+      switch (layer.kind) {
+        case NoiseLayer::Kind::kFbm: slope += a * kNoiseMaxSlope * freq; break;
+        case NoiseLayer::Kind::kRidged: slope += 4.0 * a * kNoiseMaxSlope * freq; break;
+        case NoiseLayer::Kind::kCraters:
+          slope += kCraterOverlap * layer.amplitude / layer.wavelength * kCraterMaxSlope;
+          break;
+      }
+    });
+  }
+  const double land_floor = *sea_level_ + kLandAbove, sea_ceiling = *sea_level_ - kSeaBelow;
+  double dh = std::min(raw_range_.max - raw_range_.min, slope * spacing);
+  double gap = std::max(land_floor + kSoftening - raw_range_.min, 0.0) +
+               std::max(raw_range_.max - sea_ceiling + kSoftening, 0.0);
+  double t_slope = 1.5 / (kLandEdge1 - kLandEdge0) * maps_->max_land_slope();
+  double dt = std::min(1.0, t_slope * spacing);
+  double bends = dh * dh / (16.0 * kSoftening);
+  double blend = gap * dt / 2.0 + dt * dh / 4.0;
+  return std::min(bends + blend, raw_range_.max - raw_range_.min + gap);
 }
 
 }  // namespace planet

@@ -6,6 +6,7 @@
 #include "terrain/height_source.h"
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -24,6 +25,8 @@ struct NoiseLayer {
   uint32_t seed = 1;
 };
 
+class SurfaceMaps;
+
 class ProceduralHeight : public HeightSource {
  public:
   // `radius`: the body's mean radius; `sea_level`: heights below it are
@@ -38,14 +41,32 @@ class ProceduralHeight : public HeightSource {
 
   std::optional<double> sea_level() const { return sea_level_; }
 
+  // Coastlines from a map's land mask (needs a sea level): where the map
+  // is land, ground the noise put below kLandAbove over the sea rises to
+  // it; where it is water, ground above kSeaBelow under it sinks to it;
+  // across a coast (a few of the map's pixels) the two blend, so that the
+  // coastline follows the map's, roughened by the noise. Far from any
+  // coast, ground the noise put well above the sea on land is unchanged.
+  void set_land_mask(std::shared_ptr<const SurfaceMaps> maps);
+  static constexpr double kLandAbove = 30.0;   // metres over the sea
+  static constexpr double kSeaBelow = 200.0;   // metres under it
+  static constexpr double kSoftening = 50.0;   // metres over which each bend rounds
+
  private:
   double raw_height(const glm::dvec3& p) const;
+  // The land mask's reshaping of a noise height h, where the map says
+  // `land` (in [0, 1]).
+  double shaped(double h, double land) const;
+  HeightRange shaped_range(HeightRange r, double land_min, double land_max) const;
+  double land_mask_error(double spacing) const;
 
   double radius_;
   std::vector<NoiseLayer> layers_;
   double offset_;
   std::optional<double> sea_level_;
+  HeightRange raw_range_;  // the noise's, before the sea and the land mask
   HeightRange range_;
+  std::shared_ptr<const SurfaceMaps> maps_;
 };
 
 }  // namespace planet

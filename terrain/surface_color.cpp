@@ -37,23 +37,34 @@ double albedo_variation(const std::vector<AlbedoVariation>& variation,
   return std::clamp(factor, 0.05, 2.0);
 }
 
+namespace {
+double rock_share(const SurfacePalette& p, double slope) {
+  return smoothstep(0.5 * p.steep_slope, p.steep_slope, slope);
+}
+double snow_share(const SurfacePalette& p, double height, double slope, double latitude) {
+  if (!p.snow) return 0.0;
+  // The snow line falls with |latitude| as cos^2, and snow slides off
+  // steep slopes, where rock shows through.
+  double cl = std::cos(latitude);
+  double line = p.snow_line_pole + (p.snow_line_equator - p.snow_line_pole) * cl * cl;
+  return smoothstep(line - 300.0, line + 300.0, height) *
+         (1.0 - smoothstep(0.3 * p.steep_slope, 0.8 * p.steep_slope, slope));
+}
+}  // namespace
+
+double map_cover(const SurfacePalette& p, double height, double slope, double latitude) {
+  return (1.0 - rock_share(p, slope)) * (1.0 - snow_share(p, height, slope, latitude));
+}
+
 glm::vec3 surface_albedo(const SurfacePalette& p, double height, double slope, double latitude,
                          bool at_sea, const glm::dvec3& position, double spacing) {
   if (at_sea && p.ocean) return *p.ocean;
   glm::vec3 c = glm::mix(p.low, p.high, float(smoothstep(p.low_height, p.high_height, height)));
-  c = glm::mix(c, p.steep, float(smoothstep(0.5 * p.steep_slope, p.steep_slope, slope)));
+  c = glm::mix(c, p.steep, float(rock_share(p, slope)));
   if (!p.variation.empty()) {
     c = glm::min(c * float(albedo_variation(p.variation, position, spacing)), glm::vec3(1.0f));
   }
-  if (p.snow) {
-    // The snow line falls with |latitude| as cos^2, and snow slides off
-    // steep slopes, where rock shows through.
-    double cl = std::cos(latitude);
-    double line = p.snow_line_pole + (p.snow_line_equator - p.snow_line_pole) * cl * cl;
-    double snow = smoothstep(line - 300.0, line + 300.0, height) *
-                  (1.0 - smoothstep(0.3 * p.steep_slope, 0.8 * p.steep_slope, slope));
-    c = glm::mix(c, *p.snow, float(snow));
-  }
+  if (p.snow) c = glm::mix(c, *p.snow, float(snow_share(p, height, slope, latitude)));
   return c;
 }
 

@@ -47,6 +47,11 @@ glm::vec3 surface_albedo(const SurfacePalette& palette, double height, double sl
                          double latitude, bool at_sea, const glm::dvec3& position,
                          double spacing);
 
+// How much of the ground's colour at a land point a map of the body's
+// colour can give, in [0, 1]: all of it but where steep rock or snow show
+// (which the palette resolves and a map's coarse pixels do not).
+double map_cover(const SurfacePalette& palette, double height, double slope, double latitude);
+
 // The factor `variation` scales the albedo by at `position`, within
 // [0.05, 2]: octaves fade out from a wavelength of 4 `spacing` to 2.
 double albedo_variation(const std::vector<AlbedoVariation>& variation,

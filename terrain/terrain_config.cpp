@@ -10,6 +10,10 @@
 
 #include <fmt/format.h>
 
+#include <cstdio>
+#include <map>
+#include <mutex>
+
 namespace planet {
 
 namespace {
@@ -41,8 +45,49 @@ NoiseLayer parse_layer(JsonObject& o) {
   return layer;
 }
 
+// The imagery a body's file names, read once per process whatever the
+// number of terrains built from it; none, with a note, where its day
+// image is not installed.
+std::shared_ptr<const SurfaceMaps> load_maps(JsonObject& o, const Body& body) {
+  SurfaceMapFiles files;
+  files.day = o.string("day");
+  if (o.has("night")) files.night = o.string("night");
+  files.night_radiance = o.number_or("night_radiance", files.night_radiance, 0.0, 1.0);
+  files.fade_start_m = o.number_or("fade_start_m", files.fade_start_m, 0.0, 1e8);
+  files.fade_end_m = o.number_or("fade_end_m", files.fade_end_m, 0.0, 1e8);
+  if (files.fade_end_m <= files.fade_start_m) o.fail("fade_end_m", "must be above fade_start_m");
+  std::string note = o.string_or("missing_note", "");
+  o.finish();
+  for (auto* f : {&files.day, &files.night}) {
+    if (!f->empty() && f->is_relative()) *f = project_root() / *f;
+  }
+
+  static std::mutex mutex;
+  static std::map<std::string, std::weak_ptr<const SurfaceMaps>> loaded;
+  static std::map<std::string, bool> noted;
+  std::lock_guard<std::mutex> lock(mutex);
+  std::error_code ec;
+  if (!std::filesystem::exists(files.day, ec)) {
+    if (!noted[files.day.string()]) {
+      std::fprintf(stderr, "planet: note: %s is not installed%s%s: %s's ground has its palette's colours\n",
+                   files.day.string().c_str(), note.empty() ? "" : " ", note.c_str(),
+                   body.name.c_str());
+      noted[files.day.string()] = true;
+    }
+    return nullptr;
+  }
+  std::string key = fmt::format("{}|{}|{}|{}|{}|{}", files.day.string(), files.night.string(),
+                                files.night_radiance, files.fade_start_m, files.fade_end_m,
+                                body.shape.flattening);
+  if (auto kept = loaded[key].lock()) return kept;
+  auto maps = std::make_shared<const SurfaceMaps>(files, body.shape.flattening);
+  loaded[key] = maps;
+  return maps;
+}
+
 std::shared_ptr<const HeightSource> parse_heights(JsonObject& o, const Body& body,
-                                                  std::optional<double>& sea_level) {
+                                                  std::optional<double>& sea_level,
+                                                  const std::shared_ptr<const SurfaceMaps>& maps) {
   std::string type = o.string("type");
   double mean_radius = (2.0 * body.shape.equatorial_radius + body.shape.polar_radius()) / 3.0;
   if (type == "procedural") {
@@ -51,7 +96,10 @@ std::shared_ptr<const HeightSource> parse_heights(JsonObject& o, const Body& bod
     double offset = o.number_or("offset_m", 0.0, -1e5, 1e5);
     if (o.has("sea_level_m")) sea_level = o.number("sea_level_m", -1e5, 1e5);
     o.finish();
-    return std::make_shared<ProceduralHeight>(mean_radius, std::move(layers), offset, sea_level);
+    auto heights =
+        std::make_shared<ProceduralHeight>(mean_radius, std::move(layers), offset, sea_level);
+    if (maps && sea_level) heights->set_land_mask(maps);
+    return heights;
   }
   if (type == "height_map") {
     std::filesystem::path file = o.string("file");
@@ -89,8 +137,12 @@ TerrainConfig parse_terrain(const Body& body) {
   }
   JsonObject root(body.terrain, body.file.string(), "terrain");
   config.max_level = root.integer_or("max_level", 20, 0, 24);
+  if (root.has("maps")) {
+    JsonObject maps = root.object("maps");
+    config.maps = load_maps(maps, body);
+  }
   JsonObject heights = root.object("height");
-  config.heights = parse_heights(heights, body, config.sea_level);
+  config.heights = parse_heights(heights, body, config.sea_level, config.maps);
   if (root.has("albedo")) {
     JsonObject a = root.object("albedo");
     SurfacePalette& p = config.palette;

@@ -3,6 +3,7 @@
 // surface palette and the quadtree's depth.
 #include "terrain/height_source.h"
 #include "terrain/surface_color.h"
+#include "terrain/surface_maps.h"
 
 #include "sim/body.h"
 
@@ -15,10 +16,16 @@ struct TerrainConfig {
   SurfacePalette palette;
   int max_level = 20;             // deepest quadtree level
   std::optional<double> sea_level;  // open sea at this height, if any
+  // Day and night imagery, where the body's file names it and its files
+  // are installed; none otherwise (the palette alone then).
+  std::shared_ptr<const SurfaceMaps> maps;
 };
 
 // Reads body.terrain; a body without one gets a smooth ellipsoid (zero
 // heights) with a grey palette. Errors name the body file and the field.
+// Imagery whose day file is absent is skipped with one note on stderr per
+// process (the package that holds it is optional); imagery that is there
+// but unreadable is an error.
 TerrainConfig parse_terrain(const Body& body);
 
 }  // namespace planet

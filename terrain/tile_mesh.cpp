@@ -12,9 +12,11 @@ namespace {
 
 constexpr int N = kTileGrid;
 
-uint32_t pack_albedo(glm::vec3 c) {
+// Alpha: 1 without a map; with one, 0 at sea and 0.5 + half the map's
+// cover on land (terrain.frag reads it back).
+uint32_t pack_albedo(glm::vec3 c, float alpha) {
   auto u8 = [](float v) { return uint32_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
-  return u8(c.r) | u8(c.g) << 8 | u8(c.b) << 16 | 255u << 24;
+  return u8(c.r) | u8(c.g) << 8 | u8(c.b) << 16 | u8(alpha) << 24;
 }
 
 }  // namespace
@@ -62,12 +64,17 @@ TileMesh build_tile(const TerrainSurface& surface, const TileKey& key) {
       glm::dvec3 up = ellipsoid_normal(surface.shape(), x);
       double height = height_at(i, j);
       bool at_sea = config.sea_level && height <= *config.sea_level + 1e-3;
-      glm::vec3 albedo = surface_albedo(config.palette, height, 1.0 - glm::dot(normal, up),
-                                        std::asin(std::clamp(up.z, -1.0, 1.0)), at_sea, x,
+      double slope = 1.0 - glm::dot(normal, up), latitude = std::asin(std::clamp(up.z, -1.0, 1.0));
+      glm::vec3 albedo = surface_albedo(config.palette, height, slope, latitude, at_sea, x,
                                         glm::length(at(i + 1, j) - x));
+      float alpha = 1.0f;
+      if (config.maps) {
+        alpha = at_sea ? 0.0f
+                       : 0.5f + 0.5f * float(map_cover(config.palette, height, slope, latitude));
+      }
       TileVertex& v = tile.vertices[size_t(j * N + i)];
       v = {glm::vec3(x - tile.center_body), glm::vec3(target - x), glm::vec3(normal),
-           pack_albedo(albedo), {}};
+           pack_albedo(albedo, alpha), {}};
       for (int k = 0; k < kHorizonDirections; ++k) {
         v.horizon[k] = encode_horizon(horizons.seen[size_t((j * N + i) * kHorizonDirections + k)]);
       }

@@ -17,7 +17,7 @@ struct TileVertex {
   glm::vec3 offset;       // position - center_body, metres
   glm::vec3 morph_delta;  // parent-grid position - position
   glm::vec3 normal;       // unit, body frame
-  uint32_t albedo;        // sRGB-free linear albedo, RGBA8 (alpha unused)
+  uint32_t albedo;        // sRGB-free linear albedo, RGBA8 (alpha: tile_mesh.cpp's pack_albedo)
   // The horizon's elevation in each of kHorizonDirections directions along
   // the tile's grid (encode_horizon): where the sun is below it, the
   // vertex is in a shadow.

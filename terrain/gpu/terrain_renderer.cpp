@@ -4,6 +4,7 @@
 #include "gl/context.h"
 
 #include <fmt/format.h>
+#include <glm/gtc/constants.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
@@ -12,8 +13,31 @@
 
 namespace planet {
 
-// terrain.vert's u_sky_irradiance.
+// terrain.vert's u_sky_irradiance, terrain.frag's u_day_map and u_night_map.
 constexpr GLuint kSkyIrradianceUnit = 15;
+constexpr GLuint kDayMapUnit = 13;
+constexpr GLuint kNightMapUnit = 14;
+
+namespace {
+
+// An equirectangular image as a texture with its mipmaps, repeating in
+// longitude.
+Texture map_texture(const std::vector<uint8_t>& rgba, int width, int height, GLenum format) {
+  GLuint id = 0;
+  glCreateTextures(GL_TEXTURE_2D, 1, &id);
+  int levels = 1;
+  while ((std::max(width, height) >> levels) > 0) ++levels;
+  glTextureStorage2D(id, levels, format, width, height);
+  glTextureSubImage2D(id, 0, 0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, rgba.data());
+  glGenerateTextureMipmap(id);
+  glTextureParameteri(id, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+  glTextureParameteri(id, GL_TEXTURE_WRAP_S, GL_REPEAT);
+  glTextureParameteri(id, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+  return Texture(id);
+}
+
+}  // namespace
 
 LodView TerrainRenderer::lod_view(const Camera& camera, int width, int height,
                                   double pixel_budget) {
@@ -51,6 +75,15 @@ TerrainRenderer::TerrainRenderer(const Body& body, const TerrainOptions& options
   attrib(4, 4, GL_UNSIGNED_BYTE, GL_TRUE, offsetof(TileVertex, horizon));
   attrib(5, 4, GL_UNSIGNED_BYTE, GL_TRUE, offsetof(TileVertex, horizon) + 4);
   vao_ = VertexArray(vao);
+  if (const auto& maps = surface_->config().maps) {
+    // The day image's colours stay as stored: terrain.frag maps them to
+    // albedo itself; the night image's are radiance, sRGB-encoded.
+    day_map_ = map_texture(maps->day_rgba(), maps->width(), maps->height(), GL_RGBA8);
+    if (!maps->night_rgba().empty()) {
+      night_map_ = map_texture(maps->night_rgba(), maps->night_width(), maps->night_height(),
+                               GL_SRGB8_ALPHA8);
+    }
+  }
   check_gl_errors("TerrainRenderer setup");
 }
 
@@ -118,6 +151,24 @@ TerrainStats TerrainRenderer::draw(const Camera& camera, int width, int height,
                  glm::value_ptr(glm::vec3(scale * camera.pos_body)));
     glUniform3fv(program_.uniform("u_sun_dir_atmo"), 1,
                  glm::value_ptr(glm::vec3(glm::normalize(scale * lighting.sun_dir_body))));
+  }
+  const auto& maps = surface_->config().maps;
+  glUniform1i(program_.uniform("u_has_day_map"), day_map_.id() != 0 ? 1 : 0);
+  glUniform1i(program_.uniform("u_has_night_map"), night_map_.id() != 0 ? 1 : 0);
+  if (maps) {
+    glBindTextureUnit(kDayMapUnit, day_map_.id());
+    if (night_map_.id() != 0) glBindTextureUnit(kNightMapUnit, night_map_.id());
+    double k = (1.0 - maps->flattening()) * (1.0 - maps->flattening());
+    glUniform1f(program_.uniform("u_geodetic_k"), float(k));
+    glUniform2f(program_.uniform("u_map_fade"), float(maps->files().fade_start_m),
+                float(maps->files().fade_end_m));
+    glUniform1f(program_.uniform("u_night_radiance"), float(maps->files().night_radiance));
+    const SurfacePalette& palette = surface_->config().palette;
+    glUniform3fv(program_.uniform("u_ocean_albedo"), 1,
+                 glm::value_ptr(palette.ocean.value_or(palette.low)));
+    // A pixel of the day image on the ground, metres: the mipmap level's unit.
+    glUniform1f(program_.uniform("u_map_texel_m"),
+                float(glm::pi<double>() * surface_->shape().equatorial_radius / maps->height()));
   }
   glBindVertexArray(vao_.id());
   glDisable(GL_CULL_FACE);  // skirts are seen from both sides

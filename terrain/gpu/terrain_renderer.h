@@ -90,6 +90,9 @@ class TerrainRenderer {
   Program program_;
   Buffer indices_;
   VertexArray vao_;
+  // The body's day and night imagery (TerrainConfig::maps), mipmapped;
+  // 0 where it has none.
+  Texture day_map_, night_map_;
   std::unordered_map<TileKey, GpuTile, TileKeyHash> gpu_tiles_;
   uint64_t frame_ = 0;
 };

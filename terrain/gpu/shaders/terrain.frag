@@ -1,11 +1,15 @@
 // Lambertian terrain lit by the sun through the atmosphere, where the
-// terrain's horizon does not hide it, plus the sky's ambient: the radiance
-// leaving the ground toward the camera. The atmosphere pass adds what lies
-// between (aerial perspective).
+// terrain's horizon does not hide it, plus the sky's ambient, plus the
+// lights of the night side where the body has a map of them: the radiance
+// leaving the ground toward the camera. The atmosphere pass adds what
+// lies between (aerial perspective) and dims this by the air's
+// transmittance, lights included.
 #include "atmosphere/shaders/surface_lighting.glsl"
 
 in vec3 v_normal_body;
-in vec3 v_albedo;
+in vec4 v_albedo;  // alpha: tile_mesh.cpp's pack_albedo
+in vec3 v_position_body;
+in float v_eye_distance;
 in vec3 v_sun_transmittance;
 in vec3 v_sky_irradiance;
 in float v_sun_over_horizon;
@@ -17,6 +21,35 @@ uniform vec3 u_sun_irradiance;
 // disc, or the horizon's coding where that is coarser.
 uniform float u_penumbra;
 
+// The body's imagery (terrain/surface_maps.h), equirectangular: the day
+// image's colours as stored with its land mask in alpha, and the night's
+// lights as sRGB radiance.
+uniform int u_has_day_map;
+uniform int u_has_night_map;
+layout(binding = 13) uniform sampler2D u_day_map;
+layout(binding = 14) uniform sampler2D u_night_map;
+uniform float u_geodetic_k;     // (1 - flattening)^2
+uniform vec2 u_map_fade;        // eye distances over which the day image takes over, metres
+uniform float u_night_radiance; // of a white night pixel, W m^-2 sr^-1 nm^-1
+uniform float u_map_texel_m;    // a pixel of the images on the ground, metres
+uniform vec3 u_ocean_albedo;    // the palette's open sea
+
+// Longitude and geodetic latitude as the images' coordinates.
+vec2 map_uv(vec3 p) {
+  float lon = atan(p.y, p.x);
+  float lat = atan(p.z, u_geodetic_k * length(p.xy));
+  return vec2(lon / (2.0 * kPi) + 0.5, 0.5 - lat / kPi);
+}
+
+// The day image's display colours as albedo: 0.42 c^1.2 puts the Sahara
+// near 0.4, forest near 0.07 in green and open ocean near 0.06 in blue;
+// white (ice, cloud-free snow) rises to 0.85.
+vec3 day_albedo(vec3 c) {
+  vec3 a = max(0.42 * pow(c, vec3(1.2)), vec3(0.01));
+  float white = smoothstep(0.8, 0.95, min(c.r, min(c.g, c.b)));
+  return mix(a, 0.85 * c, white);
+}
+
 void main() {
   vec3 n = normalize(v_normal_body);
   // The share of the sun's disc above the horizon: interpolated per
@@ -24,5 +57,37 @@ void main() {
   float sun_visible = smoothstep(-u_penumbra, u_penumbra, v_sun_over_horizon);
   float cos_sun = max(dot(n, u_sun_dir_body), 0.0) * sun_visible;
   vec3 irradiance = u_sun_irradiance * (v_sun_transmittance * cos_sun + v_sky_irradiance);
-  o_radiance = vec4(v_albedo / kPi * irradiance, 1.0);
+
+  vec3 albedo = v_albedo.rgb;
+  vec3 emitted = vec3(0.0);
+  if (u_has_day_map != 0) {
+    vec2 uv = map_uv(v_position_body);
+    // The mipmap level from the fragment's footprint on the ground: the
+    // longitude's wrap would break the texture coordinates' derivatives.
+    float footprint = max(length(dFdx(v_position_body)), length(dFdy(v_position_body)));
+    float lod = log2(max(footprint / u_map_texel_m, 1e-6));
+    vec4 day = textureLod(u_day_map, uv, lod);
+    // The image's land, turned as the heights turn it (procedural_height.cpp).
+    float land = smoothstep(0.3, 0.7, day.a);
+    vec3 image = day_albedo(day.rgb);
+    // Near the camera, the ground's own: water where the tile's vertices
+    // are at sea (alpha 0), the palette's colours on land (alpha 0.5 +
+    // half the map's cover). Beyond the fade, the image's: its water and
+    // land where it draws them (smooth, where the tiles' coarse triangles
+    // would draw a coastline in steps), with rock and snow as the palette
+    // has them.
+    float fade = smoothstep(u_map_fade.x, u_map_fade.y, v_eye_distance);
+    float sea = 1.0 - smoothstep(0.15, 0.35, v_albedo.a);
+    float land_cover = clamp(2.0 * v_albedo.a - 1.0, 0.0, 1.0);
+    vec3 land_albedo = mix(v_albedo.rgb, image, land_cover * fade);
+    vec3 water_albedo = mix(u_ocean_albedo, image, 1.0 - land);
+    albedo = mix(land_albedo, water_albedo, mix(sea, 1.0 - land, fade));
+    if (u_has_night_map != 0) {
+      // Lit as the sun sets, out by the time it stands 1 degree up.
+      float sun_sin = dot(normalize(v_position_body), u_sun_dir_body);
+      float on = 1.0 - smoothstep(-0.05, 0.017, sun_sin);
+      emitted = on * u_night_radiance * textureLod(u_night_map, uv, lod).rgb;
+    }
+  }
+  o_radiance = vec4(albedo / kPi * irradiance + emitted, 1.0);
 }

@@ -28,7 +28,9 @@ uniform int u_sky_light;  // 0: none (single scattering), 1: u_sky_irradiance, 2
 layout(binding = 15) uniform sampler2D u_sky_irradiance;
 
 out vec3 v_normal_body;
-out vec3 v_albedo;
+out vec4 v_albedo;  // alpha: tile_mesh.cpp's pack_albedo
+out vec3 v_position_body;
+out float v_eye_distance;
 out vec3 v_sun_transmittance;
 out vec3 v_sky_irradiance;  // per unit solar irradiance
 out float v_sun_over_horizon;  // the sun's elevation minus the horizon's in its azimuth, radians
@@ -69,7 +71,9 @@ void main() {
   rel_eye += morph * a_morph_delta;
   gl_Position = u_clip_from_view * vec4(u_view_from_body * rel_eye, 1.0);
   v_normal_body = a_normal;
-  v_albedo = a_albedo.rgb;
+  v_albedo = a_albedo;
+  v_position_body = u_center_body + a_offset;
+  v_eye_distance = d;
   v_sun_over_horizon = u_shadows != 0 ? sun_over_horizon(u_center_body + a_offset) : kHalfPi;
   v_sun_transmittance = vec3(1.0);
   v_sky_irradiance = vec3(0.0);
