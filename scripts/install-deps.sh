@@ -11,6 +11,8 @@ packages=(
   libepoxy-dev libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libglfw3-dev
   # maths, geodesy, geometry, images
   libglm-dev libgeographiclib-dev libosd-dev libopenimageio-dev
+  # JPEG (Earth's imagery) through libjpeg-turbo itself
+  libjpeg-dev
   # OpenImageIO's own oiiotool reads the captured EXRs' metadata in a test
   openimageio-tools
   # command line, JSON, logging

@@ -6,17 +6,51 @@
 
 #include <fmt/format.h>
 
+#include <csetjmp>
 #include <cstdio>
 #include <fstream>
 #include <memory>
 
-#define STB_IMAGE_IMPLEMENTATION
-#define STBI_ONLY_JPEG
-#define STBI_NO_STDIO_WRITE
-#define STBI_FAILURE_USERMSG
-#include <stb/stb_image.h>
+#include <jpeglib.h>
 
 namespace planet {
+
+namespace {
+
+// A progressive JPEG has about ten scans; hundreds mean a crafted file.
+constexpr int kMaxScans = 200;
+
+// libjpeg's errors leave through longjmp back into read_jpeg_rgba, with
+// its message kept, rather than its default exit().
+struct ErrorManager {
+  jpeg_error_mgr base;
+  std::jmp_buf jump;
+  char message[JMSG_LENGTH_MAX];
+};
+
+void on_error(j_common_ptr info) {
+  auto* e = reinterpret_cast<ErrorManager*>(info->err);
+  (*info->err->format_message)(info, e->message);
+  std::longjmp(e->jump, 1);
+}
+
+// libjpeg goes on past corrupt or truncated data with a warning (level
+// -1), filling in grey; an image half read is an error here.
+void on_message(j_common_ptr info, int level) {
+  if (level >= 0) return;  // trace messages
+  on_error(info);
+}
+
+void on_progress(j_common_ptr info) {
+  auto* d = reinterpret_cast<j_decompress_ptr>(info);
+  if (d->input_scan_number > kMaxScans) {
+    auto* e = reinterpret_cast<ErrorManager*>(info->err);
+    std::snprintf(e->message, sizeof e->message, "more than %d scans", kMaxScans);
+    std::longjmp(e->jump, 1);
+  }
+}
+
+}  // namespace
 
 bool looks_like_jpeg(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -29,20 +63,43 @@ JpegImage read_jpeg_rgba(const std::filesystem::path& file, const char* what) {
   check_readable_file(file);
   std::unique_ptr<FILE, int (*)(FILE*)> f(std::fopen(file.c_str(), "rb"), &std::fclose);
   if (!f) throw InputError(fmt::format("{}: cannot open {}", file.string(), what));
-  int w = 0, h = 0, n = 0;
-  if (!stbi_info_from_file(f.get(), &w, &h, &n)) {
+
+  // Everything the jump can cross is declared before it and is plain data
+  // or owned outside the jump's reach.
+  JpegImage out;
+  jpeg_decompress_struct info{};
+  ErrorManager errors{};
+  jpeg_progress_mgr progress{};
+  info.err = jpeg_std_error(&errors.base);
+  errors.base.error_exit = on_error;
+  errors.base.emit_message = on_message;
+  progress.progress_monitor = on_progress;
+  if (setjmp(errors.jump)) {
+    jpeg_destroy_decompress(&info);
     throw InputError(
-        fmt::format("{}: not a JPEG image ({}): {}", file.string(), what, stbi_failure_reason()));
+        fmt::format("{}: cannot decode {} as JPEG: {}", file.string(), what, errors.message));
   }
-  check_image_size(file, what, w, h, 4);
-  std::unique_ptr<stbi_uc, void (*)(void*)> pixels(stbi_load_from_file(f.get(), &w, &h, &n, 4),
-                                                   &stbi_image_free);
-  if (!pixels) {
-    throw InputError(
-        fmt::format("{}: cannot decode {}: {}", file.string(), what, stbi_failure_reason()));
+  jpeg_create_decompress(&info);
+  info.progress = &progress;
+  jpeg_stdio_src(&info, f.get());
+  jpeg_read_header(&info, TRUE);
+  try {
+    check_image_size(file, what, info.image_width, info.image_height, 4);
+  } catch (const InputError&) {
+    jpeg_destroy_decompress(&info);
+    throw;
   }
-  JpegImage out{w, h, {}};
-  out.rgba.assign(pixels.get(), pixels.get() + size_t(w) * size_t(h) * 4);
+  info.out_color_space = JCS_EXT_RGBA;
+  jpeg_start_decompress(&info);
+  out.width = int(info.output_width);
+  out.height = int(info.output_height);
+  out.rgba.resize(size_t(out.width) * size_t(out.height) * 4);
+  while (info.output_scanline < info.output_height) {
+    JSAMPROW row = out.rgba.data() + size_t(info.output_scanline) * size_t(out.width) * 4;
+    jpeg_read_scanlines(&info, &row, 1);
+  }
+  jpeg_finish_decompress(&info);
+  jpeg_destroy_decompress(&info);
   return out;
 }
 

@@ -16,6 +16,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <random>
 
 namespace planet {
@@ -129,6 +130,17 @@ TEST(SurfaceMapsTest, BadImagesAreRefusedNamingTheFile) {
     auto file = temp_file("garbage.jpg");
     std::ofstream(file, std::ios::binary) << "\xFF\xD8\xFF\xE0 not a JPEG at all";
     expect_refused(file, "a broken JPEG");
+  }
+  // A real JPEG cut in half: libjpeg would fill the rest with grey.
+  {
+    std::filesystem::path seeds = project_root() / "tests" / "fuzz" / "corpus" / "surface_maps";
+    std::ifstream in(seeds / "ed53e050c1dd26d5", std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    ASSERT_GT(bytes.size(), 100u);
+    ASSERT_EQ(bytes[0], '\0');  // the fuzz target's choice of extension, then the file
+    auto file = temp_file("truncated.jpg");
+    std::ofstream(file, std::ios::binary) << bytes.substr(1, bytes.size() / 2);
+    expect_refused(file, "a truncated JPEG");
   }
   // A text file, a directory, a file that is not there.
   {
