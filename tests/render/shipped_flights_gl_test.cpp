@@ -47,8 +47,9 @@ TEST_P(ShippedFlightGLTest, NoFrameIsBlackAndNoKeyframeIsUnderground) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Flights, ShippedFlightGLTest,
-                         ::testing::Values("alps_shafts", "alps_sunset", "ascent", "asteroid_landing",
-                                           "alps_nightfall", "earth_orbit_terminator",
+                         ::testing::Values("alps_shafts", "alps_sunset", "ascent",
+                                           "asteroid_landing", "alps_nightfall",
+                                           "earth_night_lights", "earth_orbit_terminator",
                                            "governed_ascent", "mars_crater_sunset", "mars_sunset",
                                            "moon_descent", "terrain_asteroid", "terrain_earth",
                                            "terrain_mars"),
