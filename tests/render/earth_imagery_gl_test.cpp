@@ -10,6 +10,7 @@
 #include "sim/geodesy.h"
 #include "terrain/terrain_config.h"
 
+#include "tests/render/correlation.h"
 #include "tests/render/view_from_place.h"
 
 #include <gtest/gtest.h>
@@ -23,20 +24,6 @@ namespace planet {
 namespace {
 
 constexpr int kWidth = 128, kHeight = 64;
-
-double correlation(const std::vector<double>& a, const std::vector<double>& b) {
-  double ma = 0, mb = 0;
-  for (size_t i = 0; i < a.size(); ++i) ma += a[i], mb += b[i];
-  ma /= double(a.size());
-  mb /= double(b.size());
-  double ab = 0, aa = 0, bb = 0;
-  for (size_t i = 0; i < a.size(); ++i) {
-    ab += (a[i] - ma) * (b[i] - mb);
-    aa += (a[i] - ma) * (a[i] - ma);
-    bb += (b[i] - mb) * (b[i] - mb);
-  }
-  return ab / std::sqrt(aa * bb);
-}
 
 double srgb_to_linear(double c) {
   return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);

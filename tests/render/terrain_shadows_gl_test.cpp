@@ -9,6 +9,7 @@
 #include "render/frame.h"
 #include "sim/geodesy.h"
 
+#include "tests/render/correlation.h"
 #include "tests/render/view_from_place.h"
 
 #include <gtest/gtest.h>
@@ -96,20 +97,6 @@ std::vector<double> air_shadow_loss(const Body& body, const PlaceView& view,
   return loss;
 }
 
-double correlation(const std::vector<double>& a, const std::vector<double>& b) {
-  double ma = 0, mb = 0;
-  for (size_t i = 0; i < a.size(); ++i) ma += a[i], mb += b[i];
-  ma /= double(a.size());
-  mb /= double(b.size());
-  double ab = 0, aa = 0, bb = 0;
-  for (size_t i = 0; i < a.size(); ++i) {
-    ab += (a[i] - ma) * (b[i] - mb);
-    aa += (a[i] - ma) * (a[i] - ma);
-    bb += (b[i] - mb) * (b[i] - mb);
-  }
-  return ab / std::sqrt(aa * bb);
-}
-
 TEST(TerrainShadowsGLTest, TheAirInTheShadowOfTheRidgesLosesTheSunsLight) {
   auto context = GlContext::create_headless();
   Body earth = load_body(data_dir() / "planets" / "earth.json");
@@ -132,11 +119,12 @@ TEST(TerrainShadowsGLTest, TheAirInTheShadowOfTheRidgesLosesTheSunsLight) {
     }
   }
   const double r = correlation(hillaire, raymarch);
-  std::printf("the air's shadow takes 5 %% or more from %.1f %% of the pixels (hillaire), "
-              "%.1f %% (raymarch); most taken: %.1f %%, %.1f %%; correlation %.2f; top rows %.2f %%\n",
-              100 * share(hillaire, 0.05), 100 * share(raymarch, 0.05),
-              100 * *std::max_element(hillaire.begin(), hillaire.end()),
-              100 * *std::max_element(raymarch.begin(), raymarch.end()), r, 100 * high_sky);
+  std::printf(
+      "the air's shadow takes 5 %% or more from %.1f %% of the pixels (hillaire), "
+      "%.1f %% (raymarch); most taken: %.1f %%, %.1f %%; correlation %.2f; top rows %.2f %%\n",
+      100 * share(hillaire, 0.05), 100 * share(raymarch, 0.05),
+      100 * *std::max_element(hillaire.begin(), hillaire.end()),
+      100 * *std::max_element(raymarch.begin(), raymarch.end()), r, 100 * high_sky);
   EXPECT_GT(share(hillaire, 0.05), 0.05);
   EXPECT_GT(share(raymarch, 0.05), 0.05);
   // Only light taken away (within half-float rounding of the froxels).
