@@ -24,6 +24,7 @@ PLANET_DECLARE(lab_tables)
 PLANET_DECLARE(measured_sky)
 PLANET_DECLARE(error_model)
 PLANET_DECLARE(command_line)
+PLANET_DECLARE(surface_maps)
 
 int main(int argc, char** argv) {
   using Target = int (*)(const uint8_t*, size_t);
@@ -38,6 +39,7 @@ int main(int argc, char** argv) {
       {"measured_sky", planet_fuzz_measured_sky},
       {"error_model", planet_fuzz_error_model},
       {"command_line", planet_fuzz_command_line},
+      {"surface_maps", planet_fuzz_surface_maps},
   };
   auto target = argc >= 2 ? targets.find(argv[1]) : targets.end();
   if (target == targets.end()) {
