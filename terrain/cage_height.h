@@ -43,6 +43,9 @@ class CageHeight : public HeightSource {
   HeightRange range_near(const glm::dvec3& dir_body, double radius) const override;
   HeightRange range() const override { return range_; }
   double interpolation_error(double spacing) const override;
+  CraterMarks crater_marks(const glm::dvec3& dir_body, double spacing) const override {
+    return noise_.crater_marks(dir_body, spacing);
+  }
 
   // The radius of the (scaled) limit surface along a unit direction, from
   // the table, without noise.

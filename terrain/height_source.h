@@ -14,6 +14,14 @@ struct HeightRange {
   double min = 0, max = 0;  // metres above the base shape
 };
 
+// Where a point lies on the ground a crater marks, each share in [0, 1]:
+// its floor, its raised rim, and its ejecta blanket (streaked into rays
+// around the young craters). The rim and the ejecta fade with a crater's
+// age, the floor does not. A body's palette turns them into brightness.
+struct CraterMarks {
+  double floor = 0, rim = 0, ejecta = 0;
+};
+
 class HeightSource {
  public:
   virtual ~HeightSource() = default;
@@ -33,6 +41,14 @@ class HeightSource {
   // samples spaced `spacing` metres apart: the geometric error of a tile
   // grid of that cell size, which level of detail projects to the screen.
   virtual double interpolation_error(double spacing) const = 0;
+
+  // The marks of the craters at a direction, of those wide enough to show
+  // on samples spaced `spacing` metres apart (finer ones would alias into
+  // specks); none where the source has no craters.
+  virtual CraterMarks crater_marks(const glm::dvec3& dir_body, double spacing) const {
+    (void)dir_body, (void)spacing;
+    return {};
+  }
 };
 
 }  // namespace planet

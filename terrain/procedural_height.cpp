@@ -84,6 +84,20 @@ double unit(uint32_t& state) {
   return double(state >> 8) / double(1u << 24);
 }
 
+// Whether the cell (x, y, z) holds a crater, and if so its centre c (in
+// cells) and radius r, drawn from the cell's state s in a fixed order:
+// z, y, x, then r (each draw its own statement, so that every compiler
+// places the same craters).
+bool draw_crater(int64_t x, int64_t y, int64_t z, double density, uint32_t& s, glm::dvec3& c,
+                 double& r) {
+  if (unit(s) >= density) return false;
+  c.z = double(z) + unit(s);
+  c.y = double(y) + unit(s);
+  c.x = double(x) + unit(s);
+  r = kCraterMinRadius + (kCraterMaxRadius - kCraterMinRadius) * unit(s);
+  return true;
+}
+
 // Craters whose centres lie in the cells of a lattice of spacing `cell`
 // around p, radii between 0.1 and 0.25 cell, so that a crater reaches at
 // most 0.625 cell from its centre and only the neighbour cells on the near
@@ -102,16 +116,70 @@ double crater_field(const glm::dvec3& p, double cell, double depth_ratio, double
     for (int dy = lo(frac.y); dy <= hi(frac.y); ++dy) {
       for (int dx = lo(frac.x); dx <= hi(frac.x); ++dx) {
         uint32_t s = cell_hash(cx + dx, cy + dy, cz + dz, seed);
-        if (unit(s) >= density) continue;
-        glm::dvec3 c(double(cx + dx) + unit(s), double(cy + dy) + unit(s),
-                     double(cz + dz) + unit(s));
-        double r = kCraterMinRadius + (kCraterMaxRadius - kCraterMinRadius) * unit(s);
+        glm::dvec3 c;
+        double r;
+        if (!draw_crater(cx + dx, cy + dy, cz + dz, density, s, c, r)) continue;
         double x = glm::length(q - c) / r;
         if (x < kCraterReach) h += depth_ratio * r * cell * crater_profile(x);
       }
     }
   }
   return h;
+}
+
+// The marks of the same craters as crater_field's (the same cells, draws
+// and radii) on ground sampled every `spacing` metres. Each crater draws
+// two more numbers after its radius: its youth y (most craters are old:
+// y = u^3), and the phase of its rays. The floor covers the bowl; the rim
+// a ring about 1.0-1.4 radii, bright on all but the oldest; the ejecta the
+// blanket to 2.5 radii, on young craters alone, streaked by the sum of two
+// cosines of the azimuth about the crater's centre (whole numbers of
+// periods, so the streaks close on themselves). Marks of craters narrower
+// than 1.5 `spacing` (the rim: 3) fade out; overlapping craters keep the
+// strongest of each mark.
+void crater_marks_field(const glm::dvec3& p, double cell, double density, uint32_t seed,
+                        double spacing, CraterMarks& marks) {
+  glm::dvec3 q = p / cell;
+  glm::dvec3 f = glm::floor(q);
+  glm::dvec3 frac = q - f;
+  auto lo = [](double t) { return t < kCraterMaxRadius * kCraterReach ? -1 : 0; };
+  auto hi = [](double t) { return t > 1.0 - kCraterMaxRadius * kCraterReach ? 1 : 0; };
+  auto cx = int64_t(f.x), cy = int64_t(f.y), cz = int64_t(f.z);
+  for (int dz = lo(frac.z); dz <= hi(frac.z); ++dz) {
+    for (int dy = lo(frac.y); dy <= hi(frac.y); ++dy) {
+      for (int dx = lo(frac.x); dx <= hi(frac.x); ++dx) {
+        uint32_t s = cell_hash(cx + dx, cy + dy, cz + dz, seed);
+        glm::dvec3 c;
+        double r;
+        if (!draw_crater(cx + dx, cy + dy, cz + dz, density, s, c, r)) continue;
+        double youth = unit(s);
+        youth = youth * youth * youth;
+        double phase = 6.283185307179586 * unit(s);
+        glm::dvec3 v = q - c;
+        double x = glm::length(v) / r;
+        if (x >= kCraterReach) continue;
+        double metres = r * cell;
+        double shows = smoothstep(1.5 * spacing, 3.0 * spacing, metres);
+        double rim_shows = smoothstep(3.0 * spacing, 6.0 * spacing, metres);
+        marks.floor = std::max(marks.floor, shows * (1.0 - smoothstep(0.5, 0.9, x)));
+        double ring = smoothstep(0.85, 1.05, x) * (1.0 - smoothstep(1.15, 1.45, x));
+        marks.rim = std::max(marks.rim, rim_shows * (0.3 + 0.7 * youth) * ring);
+        if (youth > 0.0 && x > 0.95) {
+          // The azimuth in a frame about the centre's direction.
+          glm::dvec3 n = glm::normalize(c);
+          glm::dvec3 e1 = glm::normalize(
+              glm::cross(n, std::abs(n.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0)));
+          glm::dvec3 e2 = glm::cross(n, e1);
+          double azimuth = std::atan2(glm::dot(v, e2), glm::dot(v, e1));
+          double streaks = 0.5 + 0.25 * std::cos(7.0 * azimuth + phase) +
+                           0.25 * std::cos(12.0 * azimuth + 2.0 * phase);
+          double blanket = smoothstep(0.95, 1.15, x) * (1.0 - smoothstep(1.2, kCraterReach, x));
+          marks.ejecta =
+              std::max(marks.ejecta, shows * youth * blanket * (0.3 + 0.7 * streaks * streaks));
+        }
+      }
+    }
+  }
 }
 
 }  // namespace
@@ -191,6 +259,21 @@ double ProceduralHeight::height(const glm::dvec3& dir_body) const {
   double h = raw_height(dir_body * radius_);
   if (maps_) h = shaped(h, maps_->land(dir_body));
   return sea_level_ ? std::max(h, *sea_level_) : h;
+}
+
+CraterMarks ProceduralHeight::crater_marks(const glm::dvec3& dir_body, double spacing) const {
+  CraterMarks marks;
+  const glm::dvec3 p = dir_body * radius_;
+  for (const NoiseLayer& layer : layers_) {
+    if (layer.kind != NoiseLayer::Kind::kCraters) continue;
+    for_each_octave(layer, [&](int i, double, double freq) {
+      // Octaves whose widest craters cannot show are skipped.
+      if (kCraterMaxRadius / freq < 1.5 * spacing) return;
+      crater_marks_field(p, 1.0 / freq, layer.density, layer.seed * 131u + uint32_t(i), spacing,
+                         marks);
+    });
+  }
+  return marks;
 }
 
 HeightRange ProceduralHeight::range_near(const glm::dvec3& dir_body, double radius) const {

@@ -56,13 +56,22 @@ double map_cover(const SurfacePalette& p, double height, double slope, double la
   return (1.0 - rock_share(p, slope)) * (1.0 - snow_share(p, height, slope, latitude));
 }
 
+double crater_albedo(const CraterAlbedo& c, const CraterMarks& m) {
+  return std::clamp((1.0 + c.floor * m.floor) * (1.0 + c.rim * m.rim) * (1.0 + c.ejecta * m.ejecta),
+                    0.05, 4.0);
+}
+
 glm::vec3 surface_albedo(const SurfacePalette& p, double height, double slope, double latitude,
-                         bool at_sea, const glm::dvec3& position, double spacing) {
+                         bool at_sea, const glm::dvec3& position, double spacing,
+                         const CraterMarks& marks) {
   if (at_sea && p.ocean) return *p.ocean;
   glm::vec3 c = glm::mix(p.low, p.high, float(smoothstep(p.low_height, p.high_height, height)));
   c = glm::mix(c, p.steep, float(rock_share(p, slope)));
   if (!p.variation.empty()) {
     c = glm::min(c * float(albedo_variation(p.variation, position, spacing)), glm::vec3(1.0f));
+  }
+  if (marks.floor > 0.0 || marks.rim > 0.0 || marks.ejecta > 0.0) {
+    c = glm::min(c * float(crater_albedo(p.craters, marks)), glm::vec3(1.0f));
   }
   if (p.snow) c = glm::mix(c, *p.snow, float(snow_share(p, height, slope, latitude)));
   return c;

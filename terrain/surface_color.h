@@ -2,6 +2,8 @@
 // Surface albedo from what the ground is: height, slope and latitude pick
 // between a body's palette (lowland, highland, rock on steep slopes, snow
 // or ice above a snow line that falls toward the poles, and ocean).
+#include "terrain/height_source.h"
+
 #include <glm/glm.hpp>
 
 #include <cstdint>
@@ -23,6 +25,14 @@ struct AlbedoVariation {
   uint32_t seed = 0;
 };
 
+// What craters do to the albedo of the land they mark: it is scaled by
+// (1 + floor F)(1 + rim R)(1 + ejecta E) for the marks' shares F, R, E.
+// Mars's dark dunes pooled on crater floors and bright rims; the Moon's
+// bright young ejecta and rays.
+struct CraterAlbedo {
+  double floor = 0, rim = 0, ejecta = 0;  // each in [-0.9, 2]
+};
+
 struct SurfacePalette {
   glm::vec3 low{0.25f, 0.22f, 0.18f};
   glm::vec3 high{0.35f, 0.32f, 0.28f};
@@ -35,6 +45,7 @@ struct SurfacePalette {
   double snow_line_pole = 0;       // ... and at the poles
   double steep_slope = 0.6;        // 1 - cos(angle to the vertical) at which rock shows fully
   std::vector<AlbedoVariation> variation;  // applied in turn to land (not to sea or snow)
+  CraterAlbedo craters;                    // applied to land with the variation
 };
 
 // `slope`: 1 - dot(normal, up). `latitude`: radians. `at_sea`: the point
@@ -42,10 +53,14 @@ struct SurfacePalette {
 // metres, where the variation's noise is sampled; `spacing`: the distance
 // to the next sample (a tile's vertex), below twice which no octave of the
 // variation is summed (sampled more coarsely, the finer octaves alias into
-// specks on distant ground).
+// specks on distant ground). `marks`: the craters' at the point, on
+// samples of that spacing.
 glm::vec3 surface_albedo(const SurfacePalette& palette, double height, double slope,
                          double latitude, bool at_sea, const glm::dvec3& position,
-                         double spacing);
+                         double spacing, const CraterMarks& marks = {});
+
+// The factor the craters' marks scale the albedo by, within [0.05, 4].
+double crater_albedo(const CraterAlbedo& craters, const CraterMarks& marks);
 
 // How much of the ground's colour at a land point a map of the body's
 // colour can give, in [0, 1]: all of it but where steep rock or snow show

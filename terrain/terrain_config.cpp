@@ -170,6 +170,13 @@ TerrainConfig parse_terrain(const Body& body) {
         p.variation.push_back(layer);
       }
     }
+    if (a.has("craters")) {
+      JsonObject c = a.object("craters");
+      p.craters.floor = c.number_or("floor", 0.0, -0.9, 2.0);
+      p.craters.rim = c.number_or("rim", 0.0, -0.9, 2.0);
+      p.craters.ejecta = c.number_or("ejecta", 0.0, -0.9, 2.0);
+      c.finish();
+    }
     a.finish();
   }
   root.finish();

@@ -65,8 +65,12 @@ TileMesh build_tile(const TerrainSurface& surface, const TileKey& key) {
       double height = height_at(i, j);
       bool at_sea = config.sea_level && height <= *config.sea_level + 1e-3;
       double slope = 1.0 - glm::dot(normal, up), latitude = std::asin(std::clamp(up.z, -1.0, 1.0));
-      glm::vec3 albedo = surface_albedo(config.palette, height, slope, latitude, at_sea, x,
-                                        glm::length(at(i + 1, j) - x));
+      const double spacing = glm::length(at(i + 1, j) - x);
+      CraterMarks marks;
+      if (!at_sea) marks = surface.heights().crater_marks(
+            cube_to_sphere(key.face, s0 + step * i, t0 + step * j), spacing);
+      glm::vec3 albedo =
+          surface_albedo(config.palette, height, slope, latitude, at_sea, x, spacing, marks);
       float alpha = 1.0f;
       if (config.maps) {
         alpha = at_sea ? 0.0f
