@@ -42,6 +42,10 @@ class HeightSource {
   // grid of that cell size, which level of detail projects to the screen.
   virtual double interpolation_error(double spacing) const = 0;
 
+  // The ground's height along a direction as if no sea filled it: under a
+  // sea, its floor, where height() gives the sea's surface.
+  virtual double seabed_height(const glm::dvec3& dir_body) const { return height(dir_body); }
+
   // The marks of the craters at a direction, of those wide enough to show
   // on samples spaced `spacing` metres apart (finer ones would alias into
   // specks); none where the source has no craters.

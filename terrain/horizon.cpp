@@ -1,5 +1,7 @@
 #include "terrain/horizon.h"
 
+#include "terrain/cube_sphere.h"
+
 #include <algorithm>
 #include <cmath>
 
@@ -29,13 +31,23 @@ BorderedGrid sample_grid(const TerrainSurface& surface, const TileKey& key) {
   g.points.resize(size_t(M * M));
   g.heights.resize(size_t(M * M));
   const double s0 = key.s0(), t0 = key.t0(), step = key.size() / (kTileGrid - 1);
+  const std::optional<double> sea = surface.config().sea_level;
+  if (sea) g.seabed.resize(size_t(M * M));
   // The face parameter runs on past the face's edge in the border; the
   // tangent warp is smooth across (a root tile's border reaches a quarter
   // of a face beyond it, well short of the warp's pole).
   for (int j = -kHorizonReach; j < kTileGrid + kHorizonReach; ++j) {
     for (int i = -kHorizonReach; i < kTileGrid + kHorizonReach; ++i) {
       size_t n = BorderedGrid::index(i, j);
-      g.points[n] = surface.face_point(key.face, s0 + step * i, t0 + step * j, &g.heights[n]);
+      if (sea) {
+        // height() is the seabed raised to the sea: one evaluation for both.
+        glm::dvec3 dir = cube_to_sphere(key.face, s0 + step * i, t0 + step * j);
+        g.seabed[n] = surface.heights().seabed_height(dir);
+        g.heights[n] = std::max(g.seabed[n], *sea);
+        g.points[n] = surface.point_at_height(dir, g.heights[n]);
+      } else {
+        g.points[n] = surface.face_point(key.face, s0 + step * i, t0 + step * j, &g.heights[n]);
+      }
     }
   }
   return g;

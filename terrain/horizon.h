@@ -38,10 +38,14 @@ struct BorderedGrid {
   static constexpr int kSide = kTileGrid + 2 * kBorder;
   std::vector<glm::dvec3> points;
   std::vector<double> heights;
+  // Where the body has a sea: the ground's heights under it
+  // (HeightSource::seabed_height), which `heights` raises to the sea's.
+  std::vector<double> seabed;
 
   // (i, j) of the tile's grid, from -kBorder to kTileGrid - 1 + kBorder.
   const glm::dvec3& at(int i, int j) const { return points[index(i, j)]; }
   double height(int i, int j) const { return heights[index(i, j)]; }
+  double seabed_height(int i, int j) const { return seabed[index(i, j)]; }
   static size_t index(int i, int j) { return size_t((j + kBorder) * kSide + (i + kBorder)); }
 };
 BorderedGrid sample_grid(const TerrainSurface& surface, const TileKey& key);

@@ -255,9 +255,13 @@ double ProceduralHeight::raw_height(const glm::dvec3& p) const {
   return h;
 }
 
-double ProceduralHeight::height(const glm::dvec3& dir_body) const {
+double ProceduralHeight::seabed_height(const glm::dvec3& dir_body) const {
   double h = raw_height(dir_body * radius_);
-  if (maps_) h = shaped(h, maps_->land(dir_body));
+  return maps_ ? shaped(h, maps_->land(dir_body)) : h;
+}
+
+double ProceduralHeight::height(const glm::dvec3& dir_body) const {
+  double h = seabed_height(dir_body);
   return sea_level_ ? std::max(h, *sea_level_) : h;
 }
 

@@ -39,6 +39,7 @@ class ProceduralHeight : public HeightSource {
   HeightRange range() const override { return range_; }
   double interpolation_error(double spacing) const override;
   CraterMarks crater_marks(const glm::dvec3& dir_body, double spacing) const override;
+  double seabed_height(const glm::dvec3& dir_body) const override;
 
   std::optional<double> sea_level() const { return sea_level_; }
 

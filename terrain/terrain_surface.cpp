@@ -32,10 +32,14 @@ TerrainSurface::TerrainSurface(const Ellipsoid& shape, TerrainConfig config)
 }
 
 glm::dvec3 TerrainSurface::point(const glm::dvec3& dir, double* height) const {
-  glm::dvec3 p = ellipsoid_point(shape_, dir);
   double h = heights().height(dir);
   if (height) *height = h;
-  return p + h * ellipsoid_normal(shape_, p);
+  return point_at_height(dir, h);
+}
+
+glm::dvec3 TerrainSurface::point_at_height(const glm::dvec3& dir, double height) const {
+  glm::dvec3 p = ellipsoid_point(shape_, dir);
+  return p + height * ellipsoid_normal(shape_, p);
 }
 
 glm::dvec3 TerrainSurface::face_point(int face, double s, double t, double* height) const {

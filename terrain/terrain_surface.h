@@ -37,6 +37,8 @@ class TerrainSurface {
 
   // The ground point along a unit direction, with its height.
   glm::dvec3 point(const glm::dvec3& dir_body, double* height = nullptr) const;
+  // The point `height` metres over the base shape along the direction.
+  glm::dvec3 point_at_height(const glm::dvec3& dir_body, double height) const;
   // Face grid point (s, t) of a face.
   glm::dvec3 face_point(int face, double s, double t, double* height = nullptr) const;
 

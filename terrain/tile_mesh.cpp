@@ -3,6 +3,8 @@
 #include "terrain/cube_sphere.h"
 #include "terrain/surface_color.h"
 
+#include <glm/gtc/packing.hpp>
+
 #include <algorithm>
 #include <cmath>
 
@@ -12,8 +14,8 @@ namespace {
 
 constexpr int N = kTileGrid;
 
-// Alpha: 1 without a map; with one, 0 at sea and 0.5 + half the map's
-// cover on land (terrain.frag reads it back).
+// Alpha: 1 without a map; with one, 0.5 + half the map's cover
+// (terrain.frag reads it back).
 uint32_t pack_albedo(glm::vec3 c, float alpha) {
   auto u8 = [](float v) { return uint32_t(std::lround(std::clamp(v, 0.0f, 1.0f) * 255.0f)); };
   return u8(c.r) | u8(c.g) << 8 | u8(c.b) << 16 | u8(alpha) << 24;
@@ -48,6 +50,17 @@ TileMesh build_tile(const TerrainSurface& surface, const TileKey& key) {
   const auto& config = surface.config();
   tile.vertices.resize(kTileVertexCount);
   tile.heights = {1e300, -1e300};
+  // The ground's height over the sea at each vertex: under it, the sea's
+  // floor (the grid has the sea's surface).
+  std::vector<double> over_sea(size_t(N * N), 0.0);
+  if (config.sea_level) {
+    for (int j = 0; j < N; ++j) {
+      for (int i = 0; i < N; ++i) {
+        over_sea[size_t(j * N + i)] = grid.seabed_height(i, j) - *config.sea_level;
+      }
+    }
+  }
+  auto sea_at = [&](int i, int j) { return over_sea[size_t(j * N + i)]; };
   for (int j = 0; j < N; ++j) {
     for (int i = 0; i < N; ++i) {
       const glm::dvec3& x = at(i, j);
@@ -56,10 +69,18 @@ TileMesh build_tile(const TerrainSurface& surface, const TileKey& key) {
       // Where the parent's grid puts this vertex: on the parent edge (or
       // diagonal) between the two even neighbours.
       glm::dvec3 target = x;
+      double sea = sea_at(i, j), sea_target = sea;
       bool odd_i = i % 2, odd_j = j % 2;
-      if (odd_i && odd_j) target = 0.5 * (at(i - 1, j - 1) + at(i + 1, j + 1));
-      else if (odd_i) target = 0.5 * (at(i - 1, j) + at(i + 1, j));
-      else if (odd_j) target = 0.5 * (at(i, j - 1) + at(i, j + 1));
+      if (odd_i && odd_j) {
+        target = 0.5 * (at(i - 1, j - 1) + at(i + 1, j + 1));
+        sea_target = 0.5 * (sea_at(i - 1, j - 1) + sea_at(i + 1, j + 1));
+      } else if (odd_i) {
+        target = 0.5 * (at(i - 1, j) + at(i + 1, j));
+        sea_target = 0.5 * (sea_at(i - 1, j) + sea_at(i + 1, j));
+      } else if (odd_j) {
+        target = 0.5 * (at(i, j - 1) + at(i, j + 1));
+        sea_target = 0.5 * (sea_at(i, j - 1) + sea_at(i, j + 1));
+      }
 
       glm::dvec3 up = ellipsoid_normal(surface.shape(), x);
       double height = height_at(i, j);
@@ -69,16 +90,18 @@ TileMesh build_tile(const TerrainSurface& surface, const TileKey& key) {
       CraterMarks marks;
       if (!at_sea) marks = surface.heights().crater_marks(
             cube_to_sphere(key.face, s0 + step * i, t0 + step * j), spacing);
+      // The land's colours at every vertex, the sea's too: terrain.frag
+      // draws the sea where the interpolated height over it is negative.
       glm::vec3 albedo =
-          surface_albedo(config.palette, height, slope, latitude, at_sea, x, spacing, marks);
+          surface_albedo(config.palette, height, slope, latitude, false, x, spacing, marks);
       float alpha = 1.0f;
       if (config.maps) {
-        alpha = at_sea ? 0.0f
-                       : 0.5f + 0.5f * float(map_cover(config.palette, height, slope, latitude));
+        alpha = 0.5f + 0.5f * float(map_cover(config.palette, height, slope, latitude));
       }
       TileVertex& v = tile.vertices[size_t(j * N + i)];
       v = {glm::vec3(x - tile.center_body), glm::vec3(target - x), glm::vec3(normal),
-           pack_albedo(albedo, alpha), {}};
+           pack_albedo(albedo, alpha),
+           glm::packHalf2x16(glm::vec2(float(sea), float(sea_target - sea))), {}};
       for (int k = 0; k < kHorizonDirections; ++k) {
         v.horizon[k] = encode_horizon(horizons.seen[size_t((j * N + i) * kHorizonDirections + k)]);
       }

@@ -18,12 +18,18 @@ struct TileVertex {
   glm::vec3 morph_delta;  // parent-grid position - position
   glm::vec3 normal;       // unit, body frame
   uint32_t albedo;        // sRGB-free linear albedo, RGBA8 (alpha: tile_mesh.cpp's pack_albedo)
+  // Two halves (glm::packHalf2x16): the ground's height over the sea,
+  // metres, negative under it (its floor's, not the sea's surface's), and
+  // its change to the parent grid's interpolation, which morphs with the
+  // position; both 0 on a body without a sea. Interpolated over the
+  // triangles, its zero is the coastline, whatever the tiles' size.
+  uint32_t sea;
   // The horizon's elevation in each of kHorizonDirections directions along
   // the tile's grid (encode_horizon): where the sun is below it, the
   // vertex is in a shadow.
   uint8_t horizon[kHorizonDirections];
 };
-static_assert(sizeof(TileVertex) == 48);
+static_assert(sizeof(TileVertex) == 52);
 
 // Vertices: the grid row by row, then skirts (bottom, top, left, right
 // edges, kTileGrid each).

@@ -74,6 +74,7 @@ TerrainRenderer::TerrainRenderer(const Body& body, const TerrainOptions& options
   attrib(3, 4, GL_UNSIGNED_BYTE, GL_TRUE, offsetof(TileVertex, albedo));
   attrib(4, 4, GL_UNSIGNED_BYTE, GL_TRUE, offsetof(TileVertex, horizon));
   attrib(5, 4, GL_UNSIGNED_BYTE, GL_TRUE, offsetof(TileVertex, horizon) + 4);
+  attrib(6, 2, GL_HALF_FLOAT, GL_FALSE, offsetof(TileVertex, sea));
   vao_ = VertexArray(vao);
   if (const auto& maps = surface_->config().maps) {
     // The day image's colours stay as stored: terrain.frag maps them to
@@ -153,6 +154,10 @@ TerrainStats TerrainRenderer::draw(const Camera& camera, int width, int height,
                  glm::value_ptr(glm::vec3(glm::normalize(scale * lighting.sun_dir_body))));
   }
   const auto& maps = surface_->config().maps;
+  const SurfacePalette& palette = surface_->config().palette;
+  const bool has_sea = surface_->config().sea_level && palette.ocean;
+  glUniform1i(program_.uniform("u_has_sea"), has_sea ? 1 : 0);
+  if (has_sea) glUniform3fv(program_.uniform("u_ocean_albedo"), 1, glm::value_ptr(*palette.ocean));
   glUniform1i(program_.uniform("u_has_day_map"), day_map_.id() != 0 ? 1 : 0);
   glUniform1i(program_.uniform("u_has_night_map"), night_map_.id() != 0 ? 1 : 0);
   if (maps) {
@@ -163,9 +168,6 @@ TerrainStats TerrainRenderer::draw(const Camera& camera, int width, int height,
     glUniform2f(program_.uniform("u_map_fade"), float(maps->files().fade_start_m),
                 float(maps->files().fade_end_m));
     glUniform1f(program_.uniform("u_night_radiance"), float(maps->files().night_radiance));
-    const SurfacePalette& palette = surface_->config().palette;
-    glUniform3fv(program_.uniform("u_ocean_albedo"), 1,
-                 glm::value_ptr(palette.ocean.value_or(palette.low)));
     // A pixel of the day image on the ground, metres: the mipmap level's unit.
     glUniform1f(program_.uniform("u_map_texel_m"),
                 float(glm::pi<double>() * surface_->shape().equatorial_radius / maps->height()));

@@ -7,6 +7,7 @@
 
 #include <gtest/gtest.h>
 #include <glm/gtc/constants.hpp>
+#include <glm/gtc/packing.hpp>
 
 #include <random>
 
@@ -109,6 +110,89 @@ TEST(TileMeshTest, MeasuredErrorStaysUnderTheLevelBound) {
         EXPECT_LE(measured, s.error_bound(level))
             << name << " tile " << key.name() << " bound " << s.error_bound(level);
       }
+    }
+  }
+}
+
+// A tile's height over the sea at (u, v) in [0, 1]^2 of its cell (i, j),
+// interpolated over the two triangles of the cell as the GPU does.
+double interpolated_sea(const TileMesh& tile, int i, int j, double u, double v) {
+  auto h = [&](int a, int b) {
+    return double(glm::unpackHalf2x16(tile.vertices[size_t(b * kTileGrid + a)].sea).x);
+  };
+  if (u >= v) return (1.0 - u) * h(i, j) + (u - v) * h(i + 1, j) + v * h(i + 1, j + 1);
+  return (1.0 - v) * h(i, j) + (v - u) * h(i, j + 1) + u * h(i + 1, j + 1);
+}
+
+TEST(TileMeshTest, CoastlinesCrossTheTrianglesWhereTheGroundMeetsTheSea) {
+  // Earth's tiles over coasts at three levels (seen from about 1000, 250
+  // and 60 km): the share of the ground the triangles put on the wrong
+  // side of the coast, against the share when whole vertices were sea or
+  // land and their colours blended across the triangles (the coast drawn
+  // in steps along the grid).
+  TerrainSurface earth = load_surface("earth");
+  ASSERT_TRUE(earth.config().sea_level);
+  const double sea_level = *earth.config().sea_level;
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int level : {5, 7, 9}) {
+    const int n = 1 << level;
+    int coastal_tiles = 0, samples = 0, wrong = 0, wrong_by_vertex = 0;
+    for (int face = 0; face < 6 && coastal_tiles < 3; ++face) {
+      for (int y = n / 3; y < n && coastal_tiles < 3; y += std::max(1, n / 8)) {
+        for (int x = n / 5; x < n && coastal_tiles < 3; x += std::max(1, n / 8)) {
+          TileKey key{face, level, uint32_t(x), uint32_t(y)};
+          // Only tiles with sea and land at a few points are built.
+          int wet = 0;
+          for (int k = 0; k < 16; ++k) {
+            wet += earth.heights().seabed_height(cube_to_sphere(
+                       face, key.s0() + key.size() * (0.1 + 0.8 * (k % 4) / 3.0),
+                       key.t0() + key.size() * (0.1 + 0.8 * (k / 4) / 3.0))) < sea_level;
+          }
+          if (wet == 0 || wet == 16) continue;
+          TileMesh tile = build_tile(earth, key);
+          int sea = 0;
+          for (int k = 0; k < kTileGrid * kTileGrid; ++k) {
+            sea += glm::unpackHalf2x16(tile.vertices[size_t(k)].sea).x < 0.0f;
+          }
+          // A coast with sea and land in some measure.
+          if (sea < 50 || sea > kTileGrid * kTileGrid - 50) continue;
+          ++coastal_tiles;
+          const double step = key.size() / (kTileGrid - 1);
+          auto vertex_sea = [&](int a, int b) {
+            return glm::unpackHalf2x16(tile.vertices[size_t(b * kTileGrid + a)].sea).x < 0.0f ? 1.0
+                                                                                              : 0.0;
+          };
+          for (int sample = 0; sample < 3000; ++sample) {
+            int i = int(unit(rng) * (kTileGrid - 1)), j = int(unit(rng) * (kTileGrid - 1));
+            double u = unit(rng), v = unit(rng);
+            bool truth =
+                earth.heights().seabed_height(cube_to_sphere(
+                    face, key.s0() + step * (i + u), key.t0() + step * (j + v))) < sea_level;
+            ++samples;
+            wrong += (interpolated_sea(tile, i, j, u, v) < 0.0) != truth;
+            double blend = u >= v ? (1 - u) * vertex_sea(i, j) + (u - v) * vertex_sea(i + 1, j) +
+                                        v * vertex_sea(i + 1, j + 1)
+                                  : (1 - v) * vertex_sea(i, j) + (v - u) * vertex_sea(i, j + 1) +
+                                        u * vertex_sea(i + 1, j + 1);
+            wrong_by_vertex += (blend > 0.5) != truth;
+          }
+        }
+      }
+    }
+    std::printf(
+        "level %d: %d coastal tiles, ground on the wrong side of the coast: %.2f %% "
+        "(by whole vertices: %.2f %%)\n",
+        level, coastal_tiles, 100.0 * wrong / samples, 100.0 * wrong_by_vertex / samples);
+    ASSERT_EQ(coastal_tiles, 3);
+    // The finer the tiles, the more the triangles gain over whole vertices
+    // (where the noise is finer than the grid, neither can draw it).
+    EXPECT_LE(wrong, wrong_by_vertex);
+    if (level >= 7) {
+      EXPECT_LT(wrong, 0.75 * wrong_by_vertex);
+    }
+    if (level == 9) {
+      EXPECT_LT(wrong, 0.01 * samples);
     }
   }
 }

@@ -10,6 +10,7 @@ in vec3 v_normal_body;
 in vec4 v_albedo;  // alpha: tile_mesh.cpp's pack_albedo
 in vec3 v_position_body;
 in float v_eye_distance;
+in float v_over_sea;
 in vec3 v_sun_transmittance;
 in vec3 v_sky_irradiance;
 in float v_sun_over_horizon;
@@ -32,6 +33,7 @@ uniform float u_geodetic_k;     // (1 - flattening)^2
 uniform vec2 u_map_fade;        // eye distances over which the day image takes over, metres
 uniform float u_night_radiance; // of a white night pixel, W m^-2 sr^-1 nm^-1
 uniform float u_map_texel_m;    // a pixel of the images on the ground, metres
+uniform int u_has_sea;
 uniform vec3 u_ocean_albedo;    // the palette's open sea
 
 // Longitude and geodetic latitude as the images' coordinates.
@@ -59,6 +61,15 @@ void main() {
   vec3 irradiance = u_sun_irradiance * (v_sun_transmittance * cos_sun + v_sky_irradiance);
 
   vec3 albedo = v_albedo.rgb;
+  // The sea where the ground's height over it, interpolated over the
+  // triangle, is negative: the coastline crosses triangles along a line
+  // that the next finer tiles only refine, its edge a pixel wide.
+  float sea = 0.0;
+  if (u_has_sea != 0) {
+    float edge = max(fwidth(v_over_sea), 1e-3);
+    sea = 1.0 - smoothstep(-0.5 * edge, 0.5 * edge, v_over_sea);
+    albedo = mix(albedo, u_ocean_albedo, sea);
+  }
   vec3 emitted = vec3(0.0);
   if (u_has_day_map != 0) {
     vec2 uv = map_uv(v_position_body);
@@ -70,14 +81,12 @@ void main() {
     // The image's land, turned as the heights turn it (procedural_height.cpp).
     float land = smoothstep(0.3, 0.7, day.a);
     vec3 image = day_albedo(day.rgb);
-    // Near the camera, the ground's own: water where the tile's vertices
-    // are at sea (alpha 0), the palette's colours on land (alpha 0.5 +
-    // half the map's cover). Beyond the fade, the image's: its water and
-    // land where it draws them (smooth, where the tiles' coarse triangles
-    // would draw a coastline in steps), with rock and snow as the palette
-    // has them.
+    // Near the camera, the ground's own: the sea above, the palette's
+    // colours on land (alpha 0.5 + half the map's cover). Beyond the
+    // fade, the image's: its water and land where it draws them (the
+    // heights follow its mask only within its 20 km pixels), with rock and
+    // snow as the palette has them.
     float fade = smoothstep(u_map_fade.x, u_map_fade.y, v_eye_distance);
-    float sea = 1.0 - smoothstep(0.15, 0.35, v_albedo.a);
     float land_cover = clamp(2.0 * v_albedo.a - 1.0, 0.0, 1.0);
     vec3 land_albedo = mix(v_albedo.rgb, image, land_cover * fade);
     vec3 water_albedo = mix(u_ocean_albedo, image, 1.0 - land);

@@ -10,6 +10,7 @@ layout(location = 2) in vec3 a_normal;
 layout(location = 3) in vec4 a_albedo;
 layout(location = 4) in vec4 a_horizon_0123;  // encoded horizon angles, directions 0 to 3
 layout(location = 5) in vec4 a_horizon_4567;  // and 4 to 7
+layout(location = 6) in vec2 a_sea;  // height over the sea, and its change to the parent grid's
 
 uniform vec3 u_center_rel_eye;
 uniform vec3 u_center_body;  // the tile's centre in float: enough for a vertex's up
@@ -31,6 +32,7 @@ out vec3 v_normal_body;
 out vec4 v_albedo;  // alpha: tile_mesh.cpp's pack_albedo
 out vec3 v_position_body;
 out float v_eye_distance;
+out float v_over_sea;  // metres: negative at sea
 out vec3 v_sun_transmittance;
 out vec3 v_sky_irradiance;  // per unit solar irradiance
 out float v_sun_over_horizon;  // the sun's elevation minus the horizon's in its azimuth, radians
@@ -74,6 +76,7 @@ void main() {
   v_albedo = a_albedo;
   v_position_body = u_center_body + a_offset;
   v_eye_distance = d;
+  v_over_sea = a_sea.x + morph * a_sea.y;
   v_sun_over_horizon = u_shadows != 0 ? sun_over_horizon(u_center_body + a_offset) : kHalfPi;
   v_sun_transmittance = vec3(1.0);
   v_sky_irradiance = vec3(0.0);
