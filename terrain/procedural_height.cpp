@@ -84,80 +84,70 @@ double unit(uint32_t& state) {
   return double(state >> 8) / double(1u << 24);
 }
 
-// Whether the cell (x, y, z) holds a crater, and if so its centre c (in
-// cells) and radius r, drawn from the cell's state s in a fixed order:
-// z, y, x, then r (each draw its own statement, so that every compiler
-// places the same craters).
-bool draw_crater(int64_t x, int64_t y, int64_t z, double density, uint32_t& s, glm::dvec3& c,
-                 double& r) {
-  if (unit(s) >= density) return false;
-  c.z = double(z) + unit(s);
-  c.y = double(y) + unit(s);
-  c.x = double(x) + unit(s);
-  r = kCraterMinRadius + (kCraterMaxRadius - kCraterMinRadius) * unit(s);
-  return true;
-}
-
-// Craters whose centres lie in the cells of a lattice of spacing `cell`
-// around p, radii between 0.1 and 0.25 cell, so that a crater reaches at
-// most 0.625 cell from its centre and only the neighbour cells on the near
-// side of each axis can touch p. Distances are taken in 3D: a centre off
-// the surface gives a smaller, shallower crater where the sphere cuts it.
-double crater_field(const glm::dvec3& p, double cell, double depth_ratio, double density,
-                    uint32_t seed) {
-  glm::dvec3 q = p / cell;
-  glm::dvec3 f = glm::floor(q);
-  glm::dvec3 frac = q - f;
+// Calls f(q, c, r, s) for each crater that can reach p: q is p and c the
+// crater's centre in cells of a lattice of spacing `cell`, r its radius
+// in cells, s the state its cell's draws go on from. A cell holds a crater
+// with chance `density`, its centre drawn within the cell in the order z,
+// y, x, then its radius (each draw its own statement, so that every
+// compiler places the same craters), between 0.1 and 0.25 cell: a crater
+// reaches at most 0.625 cell from its centre, and only the neighbour cells
+// on the near side of each axis can touch p.
+template <typename F>
+void for_each_crater(const glm::dvec3& p, double cell, double density, uint32_t seed, F&& f) {
+  const glm::dvec3 q = p / cell;
+  const glm::dvec3 floor = glm::floor(q);
+  const glm::dvec3 frac = q - floor;
   auto lo = [](double t) { return t < kCraterMaxRadius * kCraterReach ? -1 : 0; };
   auto hi = [](double t) { return t > 1.0 - kCraterMaxRadius * kCraterReach ? 1 : 0; };
-  auto cx = int64_t(f.x), cy = int64_t(f.y), cz = int64_t(f.z);
-  double h = 0;
+  auto cx = int64_t(floor.x), cy = int64_t(floor.y), cz = int64_t(floor.z);
   for (int dz = lo(frac.z); dz <= hi(frac.z); ++dz) {
     for (int dy = lo(frac.y); dy <= hi(frac.y); ++dy) {
       for (int dx = lo(frac.x); dx <= hi(frac.x); ++dx) {
         uint32_t s = cell_hash(cx + dx, cy + dy, cz + dz, seed);
+        if (unit(s) >= density) continue;
         glm::dvec3 c;
-        double r;
-        if (!draw_crater(cx + dx, cy + dy, cz + dz, density, s, c, r)) continue;
-        double x = glm::length(q - c) / r;
-        if (x < kCraterReach) h += depth_ratio * r * cell * crater_profile(x);
+        c.z = double(cz + dz) + unit(s);
+        c.y = double(cy + dy) + unit(s);
+        c.x = double(cx + dx) + unit(s);
+        double r = kCraterMinRadius + (kCraterMaxRadius - kCraterMinRadius) * unit(s);
+        f(q, c, r, s);
       }
     }
   }
+}
+
+// The craters' heights around p. Distances are taken in 3D: a centre off
+// the surface gives a smaller, shallower crater where the sphere cuts it.
+double crater_field(const glm::dvec3& p, double cell, double depth_ratio, double density,
+                    uint32_t seed) {
+  double h = 0;
+  for_each_crater(p, cell, density, seed,
+                  [&](const glm::dvec3& q, const glm::dvec3& c, double r, uint32_t) {
+                    double x = glm::length(q - c) / r;
+                    if (x < kCraterReach) h += depth_ratio * r * cell * crater_profile(x);
+                  });
   return h;
 }
 
-// The marks of the same craters as crater_field's (the same cells, draws
-// and radii) on ground sampled every `spacing` metres. Each crater draws
-// two more numbers after its radius: its youth y (most craters are old:
-// y = u^3), and the phase of its rays. The floor covers the bowl; the rim
-// a ring about 1.0-1.4 radii, bright on all but the oldest; the ejecta the
-// blanket to 2.5 radii, on young craters alone, streaked by the sum of two
-// cosines of the azimuth about the crater's centre (whole numbers of
-// periods, so the streaks close on themselves). Marks of craters narrower
-// than 1.5 `spacing` (the rim: 3) fade out; overlapping craters keep the
-// strongest of each mark.
+// The marks of the same craters on ground sampled every `spacing` metres.
+// Each crater draws two more numbers after its radius: its youth y (most
+// craters are old: y = u^3), and the phase of its rays. The floor covers
+// the bowl; the rim a ring about 1.0-1.4 radii, bright on all but the
+// oldest; the ejecta the blanket to 2.5 radii, on young craters alone,
+// streaked by the sum of two cosines of the azimuth about the crater's
+// centre (whole numbers of periods, so the streaks close on themselves).
+// Marks of craters narrower than 1.5 `spacing` (the rim: 3) fade out;
+// overlapping craters keep the strongest of each mark.
 void crater_marks_field(const glm::dvec3& p, double cell, double density, uint32_t seed,
                         double spacing, CraterMarks& marks) {
-  glm::dvec3 q = p / cell;
-  glm::dvec3 f = glm::floor(q);
-  glm::dvec3 frac = q - f;
-  auto lo = [](double t) { return t < kCraterMaxRadius * kCraterReach ? -1 : 0; };
-  auto hi = [](double t) { return t > 1.0 - kCraterMaxRadius * kCraterReach ? 1 : 0; };
-  auto cx = int64_t(f.x), cy = int64_t(f.y), cz = int64_t(f.z);
-  for (int dz = lo(frac.z); dz <= hi(frac.z); ++dz) {
-    for (int dy = lo(frac.y); dy <= hi(frac.y); ++dy) {
-      for (int dx = lo(frac.x); dx <= hi(frac.x); ++dx) {
-        uint32_t s = cell_hash(cx + dx, cy + dy, cz + dz, seed);
-        glm::dvec3 c;
-        double r;
-        if (!draw_crater(cx + dx, cy + dy, cz + dz, density, s, c, r)) continue;
+  for_each_crater(
+      p, cell, density, seed, [&](const glm::dvec3& q, const glm::dvec3& c, double r, uint32_t s) {
         double youth = unit(s);
         youth = youth * youth * youth;
         double phase = 6.283185307179586 * unit(s);
         glm::dvec3 v = q - c;
         double x = glm::length(v) / r;
-        if (x >= kCraterReach) continue;
+        if (x >= kCraterReach) return;
         double metres = r * cell;
         double shows = smoothstep(1.5 * spacing, 3.0 * spacing, metres);
         double rim_shows = smoothstep(3.0 * spacing, 6.0 * spacing, metres);
@@ -177,9 +167,7 @@ void crater_marks_field(const glm::dvec3& p, double cell, double density, uint32
           marks.ejecta =
               std::max(marks.ejecta, shows * youth * blanket * (0.3 + 0.7 * streaks * streaks));
         }
-      }
-    }
-  }
+      });
 }
 
 }  // namespace
