@@ -62,9 +62,7 @@ double crater_albedo(const CraterAlbedo& c, const CraterMarks& m) {
 }
 
 glm::vec3 surface_albedo(const SurfacePalette& p, double height, double slope, double latitude,
-                         bool at_sea, const glm::dvec3& position, double spacing,
-                         const CraterMarks& marks) {
-  if (at_sea && p.ocean) return *p.ocean;
+                         const glm::dvec3& position, double spacing, const CraterMarks& marks) {
   glm::vec3 c = glm::mix(p.low, p.high, float(smoothstep(p.low_height, p.high_height, height)));
   c = glm::mix(c, p.steep, float(rock_share(p, slope)));
   if (!p.variation.empty()) {

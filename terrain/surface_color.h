@@ -48,16 +48,17 @@ struct SurfacePalette {
   CraterAlbedo craters;                    // applied to land with the variation
 };
 
-// `slope`: 1 - dot(normal, up). `latitude`: radians. `at_sea`: the point
-// is open sea (at sea level). `position`: the point in the body frame,
-// metres, where the variation's noise is sampled; `spacing`: the distance
-// to the next sample (a tile's vertex), below twice which no octave of the
+// The land's albedo (the sea's, where the palette has one, terrain.frag
+// draws from the ground's height over it). `slope`: 1 - dot(normal, up).
+// `latitude`: radians. `position`: the point in the body frame, metres,
+// where the variation's noise is sampled; `spacing`: the distance to the
+// next sample (a tile's vertex), below twice which no octave of the
 // variation is summed (sampled more coarsely, the finer octaves alias into
 // specks on distant ground). `marks`: the craters' at the point, on
 // samples of that spacing.
 glm::vec3 surface_albedo(const SurfacePalette& palette, double height, double slope,
-                         double latitude, bool at_sea, const glm::dvec3& position,
-                         double spacing, const CraterMarks& marks = {});
+                         double latitude, const glm::dvec3& position, double spacing,
+                         const CraterMarks& marks = {});
 
 // The factor the craters' marks scale the albedo by, within [0.05, 4].
 double crater_albedo(const CraterAlbedo& craters, const CraterMarks& marks);

@@ -50,37 +50,23 @@ TileMesh build_tile(const TerrainSurface& surface, const TileKey& key) {
   const auto& config = surface.config();
   tile.vertices.resize(kTileVertexCount);
   tile.heights = {1e300, -1e300};
-  // The ground's height over the sea at each vertex: under it, the sea's
-  // floor (the grid has the sea's surface).
-  std::vector<double> over_sea(size_t(N * N), 0.0);
-  if (config.sea_level) {
-    for (int j = 0; j < N; ++j) {
-      for (int i = 0; i < N; ++i) {
-        over_sea[size_t(j * N + i)] = grid.seabed_height(i, j) - *config.sea_level;
-      }
-    }
-  }
-  auto sea_at = [&](int i, int j) { return over_sea[size_t(j * N + i)]; };
+  // The ground's height over the sea: under it, the sea's floor (the
+  // grid's heights are the sea's surface there); 0 without a sea.
+  auto sea_at = [&](int i, int j) {
+    return config.sea_level ? grid.seabed_height(i, j) - *config.sea_level : 0.0;
+  };
   for (int j = 0; j < N; ++j) {
     for (int i = 0; i < N; ++i) {
       const glm::dvec3& x = at(i, j);
       glm::dvec3 normal = glm::normalize(glm::cross(at(i + 1, j) - at(i - 1, j),
                                                     at(i, j + 1) - at(i, j - 1)));
       // Where the parent's grid puts this vertex: on the parent edge (or
-      // diagonal) between the two even neighbours.
-      glm::dvec3 target = x;
-      double sea = sea_at(i, j), sea_target = sea;
-      bool odd_i = i % 2, odd_j = j % 2;
-      if (odd_i && odd_j) {
-        target = 0.5 * (at(i - 1, j - 1) + at(i + 1, j + 1));
-        sea_target = 0.5 * (sea_at(i - 1, j - 1) + sea_at(i + 1, j + 1));
-      } else if (odd_i) {
-        target = 0.5 * (at(i - 1, j) + at(i + 1, j));
-        sea_target = 0.5 * (sea_at(i - 1, j) + sea_at(i + 1, j));
-      } else if (odd_j) {
-        target = 0.5 * (at(i, j - 1) + at(i, j + 1));
-        sea_target = 0.5 * (sea_at(i, j - 1) + sea_at(i, j + 1));
-      }
+      // diagonal) between the two even neighbours (an even vertex is its
+      // own two).
+      const int ia = i % 2 ? i - 1 : i, ib = i % 2 ? i + 1 : i;
+      const int ja = j % 2 ? j - 1 : j, jb = j % 2 ? j + 1 : j;
+      const glm::dvec3 target = 0.5 * (at(ia, ja) + at(ib, jb));
+      const double sea = sea_at(i, j), sea_target = 0.5 * (sea_at(ia, ja) + sea_at(ib, jb));
 
       glm::dvec3 up = ellipsoid_normal(surface.shape(), x);
       double height = height_at(i, j);
@@ -93,7 +79,7 @@ TileMesh build_tile(const TerrainSurface& surface, const TileKey& key) {
       // The land's colours at every vertex, the sea's too: terrain.frag
       // draws the sea where the interpolated height over it is negative.
       glm::vec3 albedo =
-          surface_albedo(config.palette, height, slope, latitude, false, x, spacing, marks);
+          surface_albedo(config.palette, height, slope, latitude, x, spacing, marks);
       float alpha = 1.0f;
       if (config.maps) {
         alpha = 0.5f + 0.5f * float(map_cover(config.palette, height, slope, latitude));
