@@ -2,7 +2,7 @@
 # The project's entry point. On a fresh Debian 12 machine:
 #   ./build.sh run        install what is missing, build, capture the Earth ascent into out/ascent
 #   ./build.sh test       install what is missing, build, run the test suite (CTest) but its
-#                         long tier (tests of 20 s and more each)
+#                         long tier (tests of 12 s and more each)
 #   ./build.sh test-long  the same for the long tier alone; CI runs both (.ci/run)
 #   ./build.sh build      install what is missing, build only
 # Warnings are errors when CI is set (as in CI runs) or PLANET_WERROR=ON.

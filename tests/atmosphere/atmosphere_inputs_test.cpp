@@ -14,8 +14,11 @@
 #include <fstream>
 #include <functional>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 nlohmann::json kider_atmosphere() {
   std::ifstream in(data_dir() / "planets" / "earth_kider_2013.json");
@@ -139,5 +142,6 @@ TEST(AtmosphereInputsTest, EveryInputIsChecked) {
             "day.json: atmosphere.inputs.aerosol.angstrum_alpha: unknown key");
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

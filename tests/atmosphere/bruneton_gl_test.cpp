@@ -18,8 +18,11 @@
 #include <fstream>
 #include <vector>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 Scene small_scene(const std::string& name) {
   Scene scene = find_scene(name);
@@ -131,5 +134,6 @@ TEST_F(BrunetonGLTest, CorruptCacheIsReportedAndRebuilt) {
   EXPECT_TRUE(fourth.from_cache());
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

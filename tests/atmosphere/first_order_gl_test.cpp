@@ -16,8 +16,11 @@
 #include <cstdio>
 #include <string>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 struct FirstOrderCase {
   const char* technique;
@@ -107,5 +110,6 @@ TEST(FirstOrderGLTest, TheChaptersScaleFunctionFailsOffEarthsRatio) {
   }
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -20,8 +20,11 @@
 #include <cstdlib>
 #include <filesystem>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 constexpr int kWidth = 32, kHeight = 16;
 
@@ -149,5 +152,6 @@ TEST(HillaireCanonicalGLTest, NoNanOrInfInAnyCanonicalScene) {
   }
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

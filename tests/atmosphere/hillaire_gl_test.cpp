@@ -17,8 +17,11 @@
 #include <cstdio>
 #include <cstdlib>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 class HillaireGLTest : public ::testing::Test {
  protected:
@@ -420,5 +423,6 @@ TEST_F(HillaireGLTest, SwitchToPerPixelMarchingDoesNotPop) {
   EXPECT_GT(worst_hard_ratio, 1.3) << "a hard switch must show as a pop";
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -10,8 +10,11 @@
 #include <cmath>
 #include <vector>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 double legendre(int l, double nu) {
   double before = 1.0, p = nu;
@@ -174,5 +177,6 @@ TEST(HillaireMathTest, ForwardGainMovesLightWithoutMakingIt) {
   }
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

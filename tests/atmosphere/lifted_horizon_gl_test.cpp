@@ -25,8 +25,11 @@
 #include <string>
 #include <vector>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 constexpr int kWidth = 96, kHeight = 54;
 // A narrow field, so that a pixel spans little of the sky's gradient at
@@ -166,5 +169,6 @@ TEST(LiftedHorizonGLTest, NoLineWhereTheGroundMeetsTheAirOverTheLowestGround) {
   }
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -13,8 +13,11 @@
 #include <functional>
 #include <limits>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 nlohmann::json earth_atmosphere() {
   std::ifstream in(data_dir() / "planets" / "earth.json");
@@ -176,5 +179,6 @@ TEST(AtmosphereModelTest, DenseVariantScalesScatteringOnly) {
   EXPECT_EQ(dense.spectrum->rayleigh_scattering[0], 10.0 * m.spectrum->rayleigh_scattering[0]);
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -21,8 +21,11 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 constexpr int kWidth = 32, kHeight = 16;
 
@@ -171,5 +174,6 @@ TEST(OneilScaleGLTest, FittedScaleBeatsTheChaptersAgainstThePathTracersFirstOrde
   }
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -11,8 +11,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 using shared::Atmosphere;
 using shared::Real3;
@@ -160,5 +163,6 @@ TEST(OneilMathTest, SingleScatteringMatchesABruteForceIntegral) {
   }
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

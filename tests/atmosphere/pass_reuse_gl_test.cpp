@@ -19,8 +19,11 @@
 #include <cstdlib>
 #include <set>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 std::set<std::string> ran(const FrameStats& stats) {
   std::set<std::string> out;
@@ -261,5 +264,6 @@ TEST_F(PassReuseGLTest, PruningByViewChangesNoPixelOnTheCanonicalScenesOrAClimbT
   EXPECT_GE(pruned_frames, 2) << "the bound left pixels out from 4e7 and 1e8 m at least";
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

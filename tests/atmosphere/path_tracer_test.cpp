@@ -17,8 +17,11 @@
 #include <cstring>
 #include <functional>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 using reference::Rng;
 
@@ -438,5 +441,6 @@ TEST(PathTracerTest, ViewRaysAreFrameRendererRays) {
   EXPECT_GT(glm::dot(view.ray_dir(1, 0), scale), glm::dot(view.ray_dir(1, 2), scale));
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

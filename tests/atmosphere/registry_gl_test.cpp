@@ -12,8 +12,11 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 TEST(TechniqueRegistryTest, EveryQualityPointParsesAndReadsBack) {
   for (const TechniqueEntry& t : technique_registry()) {
@@ -79,5 +82,6 @@ TEST(TechniqueRegistryGLTest, QualityInTheNameReachesTheTechnique) {
   EXPECT_NE(draw("raymarch:view_steps=4"), plain);
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

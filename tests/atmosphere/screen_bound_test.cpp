@@ -8,8 +8,11 @@
 
 #include <random>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 // A camera turned by yaw and pitch, with a vertical field of view and an
 // aspect, squeezed along one axis as atmosphere space squeezes an
@@ -90,5 +93,6 @@ TEST(ScreenBoundTest, NoBoundFromInsideOrWithTheSphereBehind) {
   EXPECT_LT(ahead->max.x, 0.01);
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -12,8 +12,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 TEST(SharedMathGLTest, GpuFloatAgreesWithCpuDouble) {
   auto context = GlContext::create_headless();
@@ -97,5 +100,6 @@ TEST(SharedMathGLTest, GpuFloatAgreesWithCpuDouble) {
   std::printf("worst relative optical depth difference GPU vs CPU: %.3g\n", worst_depth);
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

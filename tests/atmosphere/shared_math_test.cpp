@@ -6,8 +6,11 @@
 
 #include <cmath>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 using shared::Atmosphere;
 
@@ -133,5 +136,6 @@ TEST(SharedMathTest, PhaseFunctionsIntegrateToOne) {
   }
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -4,8 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 std::vector<double> every_nm(double step) {
   std::vector<double> w;
@@ -76,5 +79,6 @@ TEST(SpectrumTest, WeightsConvergeWithSampling) {
   for (int c = 0; c < 3; ++c) EXPECT_NEAR(coarse[c] / fine[c], 1.0, 5e-3) << c;
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -21,8 +21,11 @@
 #include <filesystem>
 #include <string>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 constexpr int kWidth = 32, kHeight = 16;
 
@@ -251,5 +254,6 @@ TEST(EveryTechniqueGLTest, NoNanOrInfFromTheGroundToDeepSpaceAndInside) {
   }
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

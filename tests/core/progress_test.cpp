@@ -8,8 +8,11 @@
 #include <string>
 #include <vector>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 TEST(ProgressTest, ObserverSeesQuietUpdatesWithTheirLineAndFraction) {
   std::vector<std::pair<std::string, double>> seen;
@@ -32,5 +35,6 @@ TEST(ProgressTest, ObserverSeesQuietUpdatesWithTheirLineAndFraction) {
   EXPECT_DOUBLE_EQ(seen[1].second, 1.0);
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

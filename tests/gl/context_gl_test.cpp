@@ -3,8 +3,11 @@
 #include <epoxy/gl.h>
 #include <gtest/gtest.h>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 TEST(ContextGLTest, HeadlessCoreContextWithComputeShaders) {
   auto context = GlContext::create_headless();
@@ -25,5 +28,6 @@ TEST(ContextGLTest, DriverErrorsBecomeExceptions) {
   EXPECT_NO_THROW(check_gl_errors("after"));
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -4,8 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 TEST(ColorDifferenceTest, Ciede2000MatchesSharmasPairs) {
   struct Pair {
@@ -41,5 +44,6 @@ TEST(ColorDifferenceTest, SrgbToLabAtWhiteBlackAndRed) {
   EXPECT_NEAR(mean_ciede2000(a, b, {0, 1}), 0.0, 1e-9);
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

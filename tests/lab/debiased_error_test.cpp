@@ -8,8 +8,11 @@
 #include <cmath>
 #include <random>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 struct Case {
   ImageRGB technique, reference, noise;
@@ -91,5 +94,6 @@ TEST(DebiasedErrorTest, NoNoiseIsThePlainRmseAndAMaskLeavesPixelsOut) {
   EXPECT_NEAR(e[1].relative(e[1].rmse), 0.1, 1e-6);
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -10,8 +10,11 @@
 
 #include <filesystem>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 TEST(LabReferencesTest, EverySceneAndItsFirstOrderShipAtTheLabsSize) {
   int scenes = 0;
@@ -35,5 +38,6 @@ TEST(LabReferencesTest, EverySceneAndItsFirstOrderShipAtTheLabsSize) {
   EXPECT_EQ(scenes, 12);
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

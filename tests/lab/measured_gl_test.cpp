@@ -13,8 +13,11 @@
 #include <cmath>
 #include <filesystem>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 TEST(MeasuredGLTest, OneCaptureAgainstItsMeasurement) {
   MeasuredOptions o;
@@ -59,5 +62,6 @@ TEST(MeasuredGLTest, OneCaptureAgainstItsMeasurement) {
   std::filesystem::remove_all(o.out);
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -13,8 +13,11 @@
 #include <fstream>
 #include <functional>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 std::filesystem::path day() { return data_dir() / "measured" / "kider-2013-05-27"; }
 std::filesystem::path first_capture() { return day() / "2013-05-27___09.30.00"; }
@@ -153,5 +156,6 @@ TEST(MeasuredSkyTest, EveryRuleOfTheLayoutIsChecked) {
   EXPECT_THROW(load_measured_day(data_dir() / "planets"), InputError);
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

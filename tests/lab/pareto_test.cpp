@@ -4,8 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 TEST(ParetoTest, KeepsTheUndominatedAndTies) {
   std::vector<CostError> points = {
@@ -27,5 +30,6 @@ TEST(ParetoTest, OnePointAndNoneAreTheirOwnFront) {
   EXPECT_TRUE(pareto_front({}).empty());
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -17,8 +17,11 @@
 #include <cstdio>
 #include <string>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 struct Pin {
   const char* cell;
@@ -90,5 +93,6 @@ TEST(StabilityPinsGLTest, EachKnownFailureStaysWhereTheMapFoundIt) {
   }
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

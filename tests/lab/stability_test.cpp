@@ -10,8 +10,11 @@
 #include <cmath>
 #include <set>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 // The vertical optical depth of a component from the bottom to the top, by
 // the midpoint rule.
@@ -210,5 +213,6 @@ TEST(StabilityResultTest, AResultReadsBackAsItWasWritten) {
   EXPECT_THROW(result_from_json({{"cell", 3}}, "x.json"), InputError);
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

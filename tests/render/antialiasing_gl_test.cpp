@@ -19,8 +19,11 @@
 #include <cstdio>
 #include <string>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 constexpr int kWidth = 96, kHeight = 48, kScale = 4;
 
@@ -149,5 +152,6 @@ TEST(AntialiasingGLTest, FramesAreTheSameRunToRun) {
   EXPECT_EQ(a.hdr, b.hdr);
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -20,8 +20,11 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 constexpr int kWidth = 128, kHeight = 64;
 
@@ -157,5 +160,6 @@ TEST_F(EarthImageryGLTest, ByNightTheCitiesGlowAsBrightAsTheFileSays) {
   EXPECT_LT(dark / dark_count, 1e-3 * measured / double(g.radiance.size()));
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

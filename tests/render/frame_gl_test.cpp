@@ -11,8 +11,11 @@
 #include <gtest/gtest.h>
 #include <glm/gtc/constants.hpp>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 class FrameGLTest : public ::testing::Test {
  protected:
@@ -140,11 +143,13 @@ TEST(ProjectionTest, ReversedZInfiniteFarPlane) {
   EXPECT_NE(depth(1e8f), depth(1.0001e8f));
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet
 
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 // The depth channel of a capture: the distance along each pixel's ray.
 // Straight down from 1 km over the smooth ellipsoid it is the height at the
@@ -171,5 +176,6 @@ TEST_F(FrameGLTest, DistanceAlongTheRayIsTheHeightStraightDown) {
   for (float d : renderer_->read_distance(up.camera)) ASSERT_TRUE(std::isinf(d) && d > 0);
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

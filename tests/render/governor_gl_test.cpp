@@ -26,8 +26,11 @@
 #include <set>
 #include <sstream>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 std::string bytes(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
@@ -228,5 +231,6 @@ TEST_F(GovernorGLTest, ANamedTechniqueWinsOverTheBudget) {
   EXPECT_FALSE(j.contains("governor"));
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

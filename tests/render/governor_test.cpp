@@ -17,8 +17,11 @@
 #include <fstream>
 #include <set>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 ViewFeatures view(double altitude_m, double sun_deg, std::string body = "earth") {
   ViewFeatures v;
@@ -270,5 +273,6 @@ TEST_F(GovernorFileTest, AScriptGivesABudgetOrATechniqueNotBoth) {
   EXPECT_DOUBLE_EQ(checked_error_budget(2.5, "--error-budget"), 2.5);
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

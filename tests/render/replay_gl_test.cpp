@@ -14,8 +14,11 @@
 
 #include <unistd.h>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 TEST(ReplayGLTest, RecordedFlightReplaysByteIdenticalFrames) {
   auto context = GlContext::create_headless();
@@ -71,5 +74,6 @@ TEST(ReplayGLTest, RecordedFlightReplaysByteIdenticalFrames) {
   EXPECT_NE(flown.front(), flown.back());
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

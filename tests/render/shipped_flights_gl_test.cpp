@@ -11,8 +11,11 @@
 
 #include <unistd.h>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 class ShippedFlightGLTest : public ::testing::TestWithParam<std::string> {};
 
@@ -55,5 +58,6 @@ INSTANTIATE_TEST_SUITE_P(Flights, ShippedFlightGLTest,
                                            "terrain_mars"),
                          [](const auto& instance) { return instance.param; });
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -19,8 +19,11 @@
 #include <cmath>
 #include <cstdio>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 constexpr int kWidth = 256, kHeight = 128;
 
@@ -197,5 +200,6 @@ TEST(StarsGLTest, AnAirlessSkyShowsThemUndimmed) {
   EXPECT_NEAR(brightest / expected, 1.0, 1e-3);
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

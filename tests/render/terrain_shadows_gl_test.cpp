@@ -20,8 +20,11 @@
 #include <cstdio>
 #include <string>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 constexpr int kWidth = 128, kHeight = 64;
 
@@ -135,5 +138,6 @@ TEST(TerrainShadowsGLTest, TheAirInTheShadowOfTheRidgesLosesTheSunsLight) {
   EXPECT_LT(high_sky, 0.01);
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -5,8 +5,11 @@
 #include <gtest/gtest.h>
 #include <glm/gtc/constants.hpp>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 TEST(FlightControllerTest, FixedStepCarriesTheRemainder) {
   FixedStep step(1.0 / 120.0);
@@ -70,5 +73,6 @@ TEST(FlightControllerTest, OrbitKeepsItsRadiusWhileTheBodyTurnsUnder) {
   EXPECT_LT(flight.speed(), 8000.0);
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -7,8 +7,11 @@
 
 #include <fstream>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 class FlightScriptTest : public ::testing::Test {
  protected:
@@ -171,5 +174,6 @@ TEST_F(FlightScriptTest, BadBodyFileNamesTheBodyFileAndField) {
                {"weird.json", "shape.type", "torus"});
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -13,8 +13,11 @@
 
 #include <fstream>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 class FlightTimingTest : public ::testing::Test {
  protected:
@@ -257,5 +260,6 @@ TEST_F(FlightTimingTest, ShippedFlightsStayAboveGroundAndShowWhatTheyPromise) {
   EXPECT_GT(end, -19.7);
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -3,8 +3,11 @@
 #include <gtest/gtest.h>
 #include <glm/gtc/constants.hpp>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 const Ellipsoid kWgs84{6378137.0, 1.0 / 298.257223563};
 
@@ -77,5 +80,6 @@ TEST(GeodesyTest, CameraAttitudeFromHeadingPitchRoll) {
   EXPECT_NEAR(up.x, 1.0, 1e-12);
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

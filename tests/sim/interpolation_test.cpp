@@ -2,8 +2,11 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 TEST(MonotoneCubicTest, PassesThroughKeysWithContinuousSlope) {
   MonotoneCubic f({0, 1, 3, 4}, {0, 10, 11, 40});
@@ -35,5 +38,6 @@ TEST(MonotoneCubicTest, FlatAtLocalExtremum) {
   for (double t = 0; t <= 2; t += 0.01) EXPECT_LE(f(t), 5.0 + 1e-12);
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -8,8 +8,11 @@
 
 #include <cmath>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 constexpr double kMuEarth = 3.986004418e14;
 
@@ -88,5 +91,6 @@ TEST(KeplerTest, UnboundStateIsAnInputError) {
   EXPECT_THROW(KeplerOrbit::from_state(s, kMuEarth, 0.0), InputError);
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -9,8 +9,11 @@
 
 #include <cmath>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 TEST(Mars24Test, MatchesPublishedWorkedExample) {
   UtcSeconds utc = parse_utc("2000-01-06T00:00:00Z", "test");
@@ -72,5 +75,6 @@ TEST(Mars24Test, SolarLongitudeAdvancesOneMartianYearIn687Days) {
   EXPECT_NEAR(std::remainder(ls1 - ls0, 2 * glm::pi<double>()), 0.0, glm::radians(0.1));
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

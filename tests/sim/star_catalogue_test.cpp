@@ -16,8 +16,11 @@
 
 #include <unistd.h>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 const Star& star_numbered(int hr) {
   const auto& stars = bright_stars();
@@ -132,5 +135,6 @@ TEST(StarCatalogueTest, AMalformedCatalogueNamesItsFileAndLine) {
   std::filesystem::remove_all(dir);
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -14,8 +14,11 @@
 
 #include <unistd.h>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 constexpr double kArcMinuteDeg = 1.0 / 60.0;
 
@@ -170,5 +173,6 @@ TEST(SunEphemerisTest, BodyWithoutEphemerisIsAnInputError) {
   EXPECT_THROW(sun_dir_body(none, BodyRotation{}, 0.0), InputError);
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

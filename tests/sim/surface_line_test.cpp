@@ -5,8 +5,11 @@
 #include <gtest/gtest.h>
 #include <glm/gtc/constants.hpp>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 TEST(SurfaceLineTest, EquatorMeridianAndRoundTrip) {
   Body earth = load_body(find_body_file("earth"));
@@ -29,5 +32,6 @@ TEST(SurfaceLineTest, EquatorMeridianAndRoundTrip) {
   EXPECT_EQ(there.height, 100.0);
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

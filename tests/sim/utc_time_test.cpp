@@ -3,8 +3,11 @@
 
 #include <gtest/gtest.h>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 TEST(UtcTimeTest, J2000IsZeroAndJulianDateMatches) {
   EXPECT_DOUBLE_EQ(parse_utc("2000-01-01T12:00:00Z", "t"), 0.0);
@@ -52,5 +55,6 @@ TEST(UtcTimeTest, ClockScalesAndPauses) {
   EXPECT_DOUBLE_EQ(clock.utc(), 600.0);
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -20,8 +20,11 @@
 #include <string>
 #include <tuple>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 std::filesystem::path write_obj(const std::string& name, const std::string& text) {
   auto dir = std::filesystem::temp_directory_path() / "planet_cage_height_test";
@@ -272,11 +275,13 @@ TEST(CageHeightTest, StellariumModelsLoadAsCages) {
   if (loaded == 0) GTEST_SKIP() << "no shape models in " << dir;
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet
 
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 // OpenSubdiv prints "Error: ..." and "Warning: ..." itself unless told
 // otherwise: once a cage is built, what it reports goes into our own one
@@ -295,5 +300,6 @@ TEST(CageHeightTest, OpenSubdivPrintsNothingOfItsOwn) {
   EXPECT_NO_THROW(cage_limit_points(cube, 1, "cube.obj"));
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -15,8 +15,11 @@
 #include <random>
 #include <vector>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 // One octave of craters in cells of 10 km, depth a tenth of the radius,
 // in three cells of ten: few overlap.
@@ -167,5 +170,6 @@ TEST(CraterMarksTest, CratersLieWhereEveryCompilerPutsThem) {
   }
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -13,8 +13,11 @@
 #include <filesystem>
 #include <fstream>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 std::filesystem::path temp_file(const std::string& name) {
   auto dir = std::filesystem::temp_directory_path() / "planet_height_source_test";
@@ -115,5 +118,6 @@ TEST(TerrainConfigTest, ErrorsNameTheBodyFileAndField) {
   }
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -12,8 +12,11 @@
 #include <cmath>
 #include <cstring>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 TerrainSurface load_surface(const std::string& name) {
   Body body = load_body(data_dir() / "planets" / (name + ".json"));
@@ -178,5 +181,6 @@ TEST(HorizonTest, ATilesHorizonsDoNotDependOnWhatTheMemoHeld) {
   EXPECT_EQ(std::memcmp(alone.data(), cached.data(), alone.size() * sizeof(TileVertex)), 0);
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -18,8 +18,11 @@
 #include <random>
 #include <unordered_map>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 LodView view_at(const Geodesy& geodesy, const Geodetic& place, double heading, double pitch,
                 int height_px) {
@@ -271,5 +274,6 @@ TEST(TileCacheTest, LongFlightStaysUnderBudgetWithoutGrowth) {
   EXPECT_LT(double(rss_end), double(rss_warm) + 0.5 * double(budget));
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -9,8 +9,11 @@
 #include <gtest/gtest.h>
 #include <glm/gtc/constants.hpp>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 constexpr int kWidth = 1280, kHeight = 720;
 
@@ -119,5 +122,6 @@ INSTANTIATE_TEST_SUITE_P(Heights, PrecisionTest, ::testing::Values(Case{2.0, 20}
                                                                 : std::string("Orbit400km");
                          });
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

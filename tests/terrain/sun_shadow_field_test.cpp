@@ -13,8 +13,11 @@
 #include <cstring>
 #include <memory>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 constexpr double kRadius = 6.36e6;
 
@@ -159,5 +162,6 @@ TEST(SunShadowFieldTest, TheFieldIsAFunctionOfTheFrameAlone) {
                            direct.shadow().size() * sizeof(float)));
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -14,8 +14,11 @@
 #include <random>
 #include <vector>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 // Points over a sphere of `radius`, or within `extent` metres of one point.
 std::vector<glm::dvec3> points(double radius, double extent, int count) {
@@ -77,5 +80,6 @@ TEST(SurfaceColorTest, FactorStaysWithinItsBounds) {
   }
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

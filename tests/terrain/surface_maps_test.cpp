@@ -19,8 +19,11 @@
 #include <iterator>
 #include <random>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 const std::filesystem::path kEarthDay = "/usr/share/xplanet/images/earth.jpg";
 
@@ -274,5 +277,6 @@ TEST_F(EarthImageryTest, RangesAndInterpolationErrorsHoldAcrossCoasts) {
   EXPECT_LE(all.min, 0.0);
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -14,8 +14,11 @@
 #include <fmt/format.h>
 #include <algorithm>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 constexpr int kWidth = 160, kHeight = 90;
 
@@ -108,5 +111,6 @@ TEST_F(TerrainGLTest, NoBackgroundShowsThroughTheGroundFromManyViewpoints) {
   }
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

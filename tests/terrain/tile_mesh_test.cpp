@@ -11,8 +11,11 @@
 
 #include <random>
 
+#include "tests/unity_id.h"
+
 namespace planet {
 namespace {
+namespace PLANET_TEST_ID {
 
 TerrainSurface load_surface(const std::string& name) {
   Body body = load_body(data_dir() / "planets" / (name + ".json"));
@@ -197,5 +200,6 @@ TEST(TileMeshTest, CoastlinesCrossTheTrianglesWhereTheGroundMeetsTheSea) {
   }
 }
 
+}  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet
