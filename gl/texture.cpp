@@ -36,9 +36,19 @@ Texture make_texture_2d_multisample(GLenum internal_format, int samples, int wid
 }
 
 Framebuffer make_framebuffer(GLuint color, GLuint depth, GLuint stencil) {
+  return make_framebuffer({color}, depth, stencil);
+}
+
+Framebuffer make_framebuffer(std::initializer_list<GLuint> colors, GLuint depth, GLuint stencil) {
   GLuint fbo = 0;
   glCreateFramebuffers(1, &fbo);
-  glNamedFramebufferTexture(fbo, GL_COLOR_ATTACHMENT0, color, 0);
+  std::vector<GLenum> attachments;
+  for (GLuint color : colors) {
+    const GLenum attachment = GL_COLOR_ATTACHMENT0 + GLenum(attachments.size());
+    glNamedFramebufferTexture(fbo, attachment, color, 0);
+    attachments.push_back(attachment);
+  }
+  glNamedFramebufferDrawBuffers(fbo, GLsizei(attachments.size()), attachments.data());
   if (depth) glNamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, depth, 0);
   if (stencil) glNamedFramebufferTexture(fbo, GL_STENCIL_ATTACHMENT, stencil, 0);
   if (glCheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {

@@ -5,6 +5,7 @@
 
 #include <epoxy/gl.h>
 
+#include <initializer_list>
 #include <utility>
 #include <vector>
 
@@ -57,6 +58,9 @@ Texture make_texture_2d_multisample(GLenum internal_format, int samples, int wid
 // A framebuffer of a colour texture and, unless 0, a depth texture and a
 // stencil texture; SystemError when GL finds it incomplete.
 Framebuffer make_framebuffer(GLuint color, GLuint depth, GLuint stencil = 0);
+// The same with several colour textures, drawn to as outputs 0, 1, ...
+Framebuffer make_framebuffer(std::initializer_list<GLuint> colors, GLuint depth,
+                             GLuint stencil = 0);
 // Binds the framebuffer and its viewport, clears its colour and its depth
 // to the far plane of reversed Z (0), and tests depth as reversed Z wants
 // it (nearer is greater): how every pass of opaque surfaces begins.

@@ -157,16 +157,20 @@ class FrameRenderer {
   void measure_exposure();
 
   int width_, height_;
-  Texture depth_, surface_, hdr_, ldr_;
+  // ground_below_: how far the surface under each pixel lies below the
+  // datum (terrain.frag), for the atmosphere's air in front of it.
+  Texture depth_, surface_, ground_below_, hdr_, ldr_;
   // The sky target's stencil: cleared before the technique draws, for the
   // technique's own masks (which pixels each of its passes shades).
   Texture sky_stencil_;
-  Framebuffer surface_fbo_, hdr_fbo_, ldr_fbo_;
+  // surface_draw_fbo_: the surfaces' pass (and the resolve), which also
+  // writes ground_below_; surface_fbo_: the passes after it.
+  Framebuffer surface_fbo_, surface_draw_fbo_, hdr_fbo_, ldr_fbo_;
   Program tonemap_program_;
   // Anti-aliasing: the multisampled surfaces, resolved into surface_ and
   // depth_ (made by set_antialiasing).
   int samples_ = 1;
-  Texture surface_ms_, depth_ms_;
+  Texture surface_ms_, ground_below_ms_, depth_ms_;
   Framebuffer surface_ms_fbo_;
   Program resolve_program_, edges_program_;
   Buffer atmosphere_block_;

@@ -51,9 +51,10 @@ TileMesh build_tile(const TerrainSurface& surface, const TileKey& key) {
   tile.vertices.resize(kTileVertexCount);
   tile.heights = {1e300, -1e300};
   // The ground's height over the sea: under it, the sea's floor (the
-  // grid's heights are the sea's surface there); 0 without a sea.
+  // grid's heights are the sea's surface there); without a sea, over the
+  // datum.
   auto sea_at = [&](int i, int j) {
-    return config.sea_level ? grid.seabed_height(i, j) - *config.sea_level : 0.0;
+    return config.sea_level ? grid.seabed_height(i, j) - *config.sea_level : height_at(i, j);
   };
   for (int j = 0; j < N; ++j) {
     for (int i = 0; i < N; ++i) {

@@ -21,8 +21,10 @@ struct TileVertex {
   // Two halves (glm::packHalf2x16): the ground's height over the sea,
   // metres, negative under it (its floor's, not the sea's surface's), and
   // its change to the parent grid's interpolation, which morphs with the
-  // position; both 0 on a body without a sea. Interpolated over the
-  // triangles, its zero is the coastline, whatever the tiles' size.
+  // position. Interpolated over the triangles, its zero is the coastline,
+  // whatever the tiles' size. On a body without a sea, the height over
+  // the datum: where the ground lies below the atmosphere's bottom sphere,
+  // the air in front of it goes down to it (terrain.frag).
   uint32_t sea;
   // The horizon's elevation in each of kHorizonDirections directions along
   // the tile's grid (encode_horizon): where the sun is below it, the

@@ -36,3 +36,15 @@ SkyPixel sky_pixel(Atmosphere atmosphere, sampler2D depth_texture, sampler2D sur
   if (p.depth == 0.0) p.dir = over_the_lifted_horizon(atmosphere, p.camera, p.r_camera, p.dir);
   return p;
 }
+
+// Where the air in front of the pixel's surface ends, as a radius: at the
+// bottom sphere, which the facets of a coarse tile sag below (see
+// hillaire_sky.frag), or lower where the ground under the pixel itself
+// lies below the datum (a crater's floor, a canyon: terrain.frag), so that
+// the air in a hollow is marched down to its floor, at the bottom's
+// density (density.glsl). Heights count as metres of atmosphere space,
+// whose scale differs from the body's by under 0.3 %.
+layout(binding = 11) uniform sampler2D u_ground_below;
+float air_floor_radius(Atmosphere atmosphere) {
+  return atmosphere.bottom_radius + min(texelFetch(u_ground_below, ivec2(gl_FragCoord.xy), 0).r, 0.0);
+}

@@ -70,6 +70,12 @@ struct SkyFrame {
   // atmosphere between them and the camera.
   GLuint depth_texture = 0;
   GLuint surface_texture = 0;
+  // How far the surface under each pixel lies below the datum, metres (R,
+  // 0 where it does not, or no texture): the air in front of it goes down
+  // to it (sky_pixel.glsl's air_floor_radius), for the techniques that
+  // march the air there.
+  GLuint ground_below_texture = 0;
+  static constexpr GLuint kGroundBelowUnit = 11;  // sky_pixel.glsl's u_ground_below
   // Output: an RGBA16F/32F framebuffer of the final HDR radiance, with an
   // 8-bit stencil cleared to 0 that the technique may use to restrict its
   // passes to the pixels they serve (a fragment shader's branches cost

@@ -157,6 +157,7 @@ TerrainStats TerrainRenderer::draw(const Camera& camera, int width, int height,
   const SurfacePalette& palette = surface_->config().palette;
   const bool has_sea = surface_->config().sea_level && palette.ocean;
   glUniform1i(program_.uniform("u_has_sea"), has_sea ? 1 : 0);
+  glUniform1i(program_.uniform("u_over_datum"), surface_->config().sea_level ? 0 : 1);
   if (has_sea) glUniform3fv(program_.uniform("u_ocean_albedo"), 1, glm::value_ptr(*palette.ocean));
   glUniform1i(program_.uniform("u_has_day_map"), day_map_.id() != 0 ? 1 : 0);
   glUniform1i(program_.uniform("u_has_night_map"), night_map_.id() != 0 ? 1 : 0);

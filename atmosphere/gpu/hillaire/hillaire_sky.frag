@@ -128,11 +128,17 @@ void main() {
                                 t_ground_far) && t_ground_near > 0.0;
   bool open_sky = depth == 0.0 && !hits_ground;
   // The air in front of a surface ends at the bottom sphere: a coarse tile's
-  // facets are chords that sag below it (km from high up), and the model's
-  // air is not defined beneath its ground, where its density would grow
-  // without bound. From 400 km the march through the sag made the ground
-  // near the limb 5-8 % too bright.
-  if (depth > 0.0 && hits_ground) t_surface = min(t_surface, t_ground_near);
+  // facets are chords that sag below it (km from high up). From 400 km the
+  // march through the sag made the ground near the limb 5-8 % too bright.
+  // Where the ground under the pixel lies below the datum, its air goes
+  // down to it (air_floor_radius).
+  if (depth > 0.0) {
+    float t_floor_near, t_floor_far;
+    if (ray_sphere(camera, dir, air_floor_radius(atmosphere), t_floor_near, t_floor_far) &&
+        t_floor_near > 0.0) {
+      t_surface = min(t_surface, t_floor_near);
+    }
+  }
 
   // Froxels near, the per-pixel march beyond; blended over the last fifth
   // of the volume's range so that no edge shows on the ground.

@@ -403,6 +403,7 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   }
   glBindTextureUnit(0, frame.depth_texture);
   glBindTextureUnit(1, frame.surface_texture);
+  glBindTextureUnit(SkyFrame::kGroundBelowUnit, frame.ground_below_texture);
   glBindTextureUnit(4, sky_view_lut_.id());
   glBindTextureUnit(5, aerial_scattering_.id());
   glBindTextureUnit(6, aerial_transmittance_.id());

@@ -38,6 +38,7 @@ void RaymarchTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, block_.id());
   glBindTextureUnit(0, frame.depth_texture);
   glBindTextureUnit(1, frame.surface_texture);
+  glBindTextureUnit(SkyFrame::kGroundBelowUnit, frame.ground_below_texture);
   glm::vec3 camera(frame.camera_atmo);
   glUniform3fv(program_.uniform("u_camera"), 1, glm::value_ptr(camera));
   glUniformMatrix3fv(program_.uniform("u_ray_from_ndc"), 1, GL_FALSE,

@@ -15,6 +15,10 @@ in vec3 v_sun_transmittance;
 in vec3 v_sky_irradiance;
 in float v_sun_over_horizon;
 layout(location = 0) out vec4 o_radiance;
+// How far the ground lies below the datum, metres (0 where it does not):
+// the air in front of it goes down to it (sky_pixel.glsl). A drawn sea
+// lies on the datum.
+layout(location = 1) out float o_ground_below;
 
 uniform vec3 u_sun_dir_body;
 uniform vec3 u_sun_irradiance;
@@ -34,6 +38,7 @@ uniform vec2 u_map_fade;        // eye distances over which the day image takes 
 uniform float u_night_radiance; // of a white night pixel, W m^-2 sr^-1 nm^-1
 uniform float u_map_texel_m;    // a pixel of the images on the ground, metres
 uniform int u_has_sea;
+uniform int u_over_datum;       // 1: v_over_sea is the height over the datum (no sea)
 uniform vec3 u_ocean_albedo;    // the palette's open sea
 
 // Longitude and geodetic latitude as the images' coordinates.
@@ -99,4 +104,5 @@ void main() {
     }
   }
   o_radiance = vec4(albedo / kPi * irradiance + emitted, 1.0);
+  o_ground_below = u_over_datum != 0 ? min(v_over_sea, 0.0) : 0.0;
 }

@@ -32,7 +32,7 @@ out vec3 v_normal_body;
 out vec4 v_albedo;  // alpha: tile_mesh.cpp's pack_albedo
 out vec3 v_position_body;
 out float v_eye_distance;
-out float v_over_sea;  // metres: negative at sea
+out float v_over_sea;  // metres: negative at sea (over the datum where there is none)
 out vec3 v_sun_transmittance;
 out vec3 v_sky_irradiance;  // per unit solar irradiance
 out float v_sun_over_horizon;  // the sun's elevation minus the horizon's in its azimuth, radians
