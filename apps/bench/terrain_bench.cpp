@@ -7,6 +7,8 @@
 #include "render/frame.h"
 #include "sim/geodesy.h"
 #include "sim/star_catalogue.h"
+#include "sim/sun_ephemeris.h"
+#include "sim/utc_time.h"
 #include "terrain/horizon.h"
 #include "terrain/lod.h"
 #include "terrain/sun_shadow_field.h"
@@ -17,7 +19,9 @@
 #include <glm/gtc/constants.hpp>
 
 #include <chrono>
+#include <string>
 #include <unordered_map>
+#include <vector>
 
 namespace planet {
 namespace {
@@ -33,6 +37,34 @@ Camera camera_above(const Body& body, const TerrainSurface& surface, double abov
   place.height = ground + above;
   double pitch = above < 100 ? 4.0 : above < 50e3 ? -15.0 : -30.0;
   return geodesy.camera_at(place, glm::radians(60.0), glm::radians(pitch), Camera().vertical_fov);
+}
+
+// Times a benchmark's frames: each iteration renders one (`render`
+// returns its FrameStats) and takes the sum of its passes' wall time; then
+// each counter of `counted` is the mean wall time a frame of the passes
+// named for it.
+struct PassCounter {
+  const char* counter;
+  std::vector<std::string> passes;
+};
+
+template <class Render>
+void time_frames(benchmark::State& state, Render render, const std::vector<PassCounter>& counted) {
+  std::unordered_map<std::string, double> totals;
+  for (auto _ : state) {
+    FrameStats stats = render();
+    double frame_ms = 0;
+    for (const auto& p : stats.passes) {
+      frame_ms += p.wall_ms;
+      totals[p.pass] += p.wall_ms;
+    }
+    state.SetIterationTime(frame_ms * 1e-3);
+  }
+  for (const PassCounter& c : counted) {
+    double sum = 0;
+    for (const std::string& pass : c.passes) sum += totals[pass];
+    state.counters[c.counter] = sum / double(state.iterations());
+  }
 }
 
 void BM_TerrainLodSelection(benchmark::State& state) {
@@ -176,22 +208,10 @@ void BM_TerrainShadowsInAir(benchmark::State& state) {
   renderer.set_terrain_wait(300.0);
   renderer.render(camera, sun(), 10.0);  // builds the tiles, pays for shader compilation
   renderer.set_terrain_wait(0.0);
-  double field_ms = 0, froxels_ms = 0, sky_ms = 0;
-  for (auto _ : state) {
-    FrameStats stats = renderer.render(camera, sun(), 10.0);
-    double frame_ms = 0;
-    for (const auto& p : stats.passes) {
-      frame_ms += p.wall_ms;
-      if (p.pass == "terrain_shadow") field_ms += p.wall_ms;
-      if (p.pass == "aerial_perspective") froxels_ms += p.wall_ms;
-      if (p.pass == "sky") sky_ms += p.wall_ms;
-    }
-    state.SetIterationTime(frame_ms * 1e-3);
-  }
-  const double n = double(state.iterations());
-  state.counters["terrain_shadow_ms"] = field_ms / n;
-  state.counters["aerial_perspective_ms"] = froxels_ms / n;
-  state.counters["sky_ms"] = sky_ms / n;
+  time_frames(state, [&] { return renderer.render(camera, sun(), 10.0); },
+              {{"terrain_shadow_ms", {"terrain_shadow"}},
+               {"aerial_perspective_ms", {"aerial_perspective"}},
+               {"sky_ms", {"sky"}}});
 }
 BENCHMARK(BM_TerrainShadowsInAir)
     ->Arg(0)
@@ -222,20 +242,8 @@ void BM_TerrainFrame(benchmark::State& state) {
   renderer.set_terrain_wait(300.0);
   renderer.render(camera, sun, 8.0);  // builds the tiles, pays for shader compilation
   renderer.set_terrain_wait(0.0);
-  double surface_ms = 0, antialias_ms = 0;
-  for (auto _ : state) {
-    FrameStats stats = renderer.render(camera, sun, 8.0);
-    double frame_ms = 0;
-    for (const auto& p : stats.passes) {
-      frame_ms += p.wall_ms;
-      if (p.pass == "surface") surface_ms += p.wall_ms;
-      if (p.pass == "resolve" || p.pass == "antialias") antialias_ms += p.wall_ms;
-    }
-    state.SetIterationTime(frame_ms * 1e-3);
-  }
-  const double n = double(state.iterations());
-  state.counters["surface_ms"] = surface_ms / n;
-  state.counters["antialias_ms"] = antialias_ms / n;
+  time_frames(state, [&] { return renderer.render(camera, sun, 8.0); },
+              {{"surface_ms", {"surface"}}, {"antialias_ms", {"resolve", "antialias"}}});
   state.counters["tiles_drawn"] = renderer.terrain_stats().tiles_drawn;
   state.counters["triangles"] = double(renderer.terrain_stats().triangles);
 }
@@ -267,20 +275,8 @@ void BM_StarsFrame(benchmark::State& state) {
   renderer.set_terrain_wait(300.0);
   renderer.render(camera, sun, 1e4);  // builds the tiles, pays for shader compilation
   renderer.set_terrain_wait(0.0);
-  double stars_ms = 0, exposure_ms = 0;
-  for (auto _ : state) {
-    FrameStats stats = renderer.render(camera, sun, 1e4);
-    double frame_ms = 0;
-    for (const auto& p : stats.passes) {
-      frame_ms += p.wall_ms;
-      if (p.pass == "stars") stars_ms += p.wall_ms;
-      if (p.pass == "exposure") exposure_ms += p.wall_ms;
-    }
-    state.SetIterationTime(frame_ms * 1e-3);
-  }
-  const double n = double(state.iterations());
-  state.counters["stars_ms"] = stars_ms / n;
-  state.counters["exposure_ms"] = exposure_ms / n;
+  time_frames(state, [&] { return renderer.render(camera, sun, 1e4); },
+              {{"stars_ms", {"stars"}}, {"exposure_ms", {"exposure"}}});
 }
 BENCHMARK(BM_StarsFrame)
     ->Arg(0)
@@ -310,20 +306,80 @@ void BM_EarthImageryFrame(benchmark::State& state) {
   renderer.set_terrain_wait(300.0);
   renderer.render(camera, sun, 3.0);  // builds the tiles, pays for shader compilation
   renderer.set_terrain_wait(0.0);
-  double surface_ms = 0;
-  for (auto _ : state) {
-    FrameStats stats = renderer.render(camera, sun, 3.0);
-    double frame_ms = 0;
-    for (const auto& p : stats.passes) {
-      frame_ms += p.wall_ms;
-      if (p.pass == "surface") surface_ms += p.wall_ms;
-    }
-    state.SetIterationTime(frame_ms * 1e-3);
-  }
-  state.counters["surface_ms"] = surface_ms / double(state.iterations());
+  time_frames(state, [&] { return renderer.render(camera, sun, 3.0); },
+              {{"surface_ms", {"surface"}}});
 }
 BENCHMARK(BM_EarthImageryFrame)
     ->ArgsProduct({{0, 1}, {0, 1}})
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
+
+// The world a pilot sees, the whole frame before and after it (1280x720,
+// hillaire): range(1) 0 draws as the frame did before it, with no
+// anti-aliasing, no shadows on the ground or in the air, no imagery, no
+// stars and a fixed exposure; 1 with all of them (4x MSAA). range(0)
+// picks the view: 0, alps_sunset's frame 20 (3000 m over the Alps at
+// 19:00 UTC, the sun 3 deg up behind); 1, mars_crater_sunset's frame 20
+// (4500 m over the crater, the sun 10 deg up behind); 2,
+// earth_night_lights' frame 0 (Europe's night side from 400 km). The clock
+// moves a minute every frame, so that the sun-dependent passes run every
+// frame, as in a capture. What tiles hold (crater marks, coastlines) is
+// built once, outside the frames.
+void BM_PilotsWorldFrame(benchmark::State& state) {
+  struct View {
+    const char* body;
+    Geodetic place;
+    double heading_deg, pitch_deg;
+    const char* utc;
+    double exposure;
+  };
+  const View views[] = {
+      {"earth", {glm::radians(46.52), glm::radians(7.95), 3000.0}, 100.0, -8.0,
+       "2026-06-21T19:00:00Z", 10.0},
+      {"mars", {glm::radians(-3.82), glm::radians(137.55), 4500.0}, 105.0, -12.0,
+       "2026-06-21T22:30:00Z", 24.0},
+      {"earth", {glm::radians(50.0), glm::radians(10.0), 400e3}, 180.0, -60.0,
+       "2026-06-21T23:00:00Z", 3.0},
+  };
+  const View& view = views[state.range(0)];
+  const bool after = state.range(1) != 0;
+  auto context = GlContext::create_headless();
+  Body body = load_body(data_dir() / "planets" / (std::string(view.body) + ".json"));
+  if (!after) body.terrain.erase("maps");
+  FrameRenderer renderer(1280, 720);
+  renderer.set_antialiasing(after ? 4 : 1);
+  renderer.set_terrain_shadows(after);
+  renderer.set_stars(after);
+  renderer.set_auto_exposure(after);
+  renderer.set_synchronous_timing(true);
+  renderer.set_body(body, load_atmosphere(body),
+                    make_technique(after ? "hillaire" : "hillaire:terrain_shadows=off"));
+  Geodesy geodesy(body.shape);
+  Camera camera = geodesy.camera_at(view.place, glm::radians(view.heading_deg),
+                                    glm::radians(view.pitch_deg), glm::radians(60.0));
+  UtcSeconds utc = parse_utc(view.utc, "bench");
+  auto frame = [&] {
+    renderer.set_star_orientation(body_from_icrf(body, utc));
+    FrameStats stats =
+        renderer.render(camera, sun_dir_body(body.ephemeris, body.rotation, utc), view.exposure);
+    utc += 60.0;
+    return stats;
+  };
+  renderer.set_terrain_wait(300.0);
+  frame();  // builds the tiles, pays for shader compilation
+  renderer.set_terrain_wait(0.0);
+  time_frames(state, frame,
+              {{"surface_ms", {"surface"}},
+               {"antialias_ms", {"resolve", "antialias"}},
+               {"terrain_shadow_ms", {"terrain_shadow"}},
+               {"aerial_perspective_ms", {"aerial_perspective"}},
+               {"sky_ms", {"sky", "space"}},
+               {"stars_ms", {"stars"}},
+               {"exposure_ms", {"exposure"}}});
+}
+BENCHMARK(BM_PilotsWorldFrame)
+    ->ArgsProduct({{0, 1, 2}, {0, 1}})
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(3);
