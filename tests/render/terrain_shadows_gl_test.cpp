@@ -101,6 +101,12 @@ std::vector<double> air_shadow_loss(const Body& body, const PlaceView& view,
   return loss;
 }
 
+// The share of the pixels that lose more than `above` of their radiance.
+double share(const std::vector<double>& loss, double above) {
+  return double(std::count_if(loss.begin(), loss.end(), [&](double l) { return l > above; })) /
+         double(loss.size());
+}
+
 TEST(TerrainShadowsGLTest, TheAirInTheShadowOfTheRidgesLosesTheSunsLight) {
   auto context = GlContext::create_headless();
   Body earth = load_body(data_dir() / "planets" / "earth.json");
@@ -110,10 +116,6 @@ TEST(TerrainShadowsGLTest, TheAirInTheShadowOfTheRidgesLosesTheSunsLight) {
   PlaceView view = view_from_place(earth.shape, place, 295.0, -3.0, 60.0, 1.5, 300.0);
   std::vector<double> hillaire = air_shadow_loss(earth, view, "hillaire");
   std::vector<double> raymarch = air_shadow_loss(earth, view, "raymarch");
-  auto share = [](const std::vector<double>& loss, double above) {
-    return double(std::count_if(loss.begin(), loss.end(), [&](double l) { return l > above; })) /
-           double(loss.size());
-  };
   // The rows from 30 deg above the view's centre up look well over every
   // ridge's shadow.
   double high_sky = 0;
@@ -154,10 +156,6 @@ TEST(TerrainShadowsGLTest, TheAirOfAMarsHollowBelowTheDatumIsShadedToo) {
   PlaceView view = view_from_place(mars.shape, place, 200.0, -10.0, 60.0, 10.0, 200.0);
   std::vector<double> hillaire = air_shadow_loss(mars, view, "hillaire");
   std::vector<double> raymarch = air_shadow_loss(mars, view, "raymarch:view_steps=256");
-  auto share = [](const std::vector<double>& loss, double above) {
-    return double(std::count_if(loss.begin(), loss.end(), [&](double l) { return l > above; })) /
-           double(loss.size());
-  };
   const double most_hillaire = *std::max_element(hillaire.begin(), hillaire.end());
   const double most_raymarch = *std::max_element(raymarch.begin(), raymarch.end());
   std::printf(
