@@ -123,22 +123,17 @@ void main() {
   vec3 camera = pixel.camera;
   const float kFar = 3.0e38;
 
-  float t_ground_near, t_ground_far;
-  bool hits_ground = ray_sphere(camera, dir, atmosphere.bottom_radius, t_ground_near,
-                                t_ground_far) && t_ground_near > 0.0;
-  bool open_sky = depth == 0.0 && !hits_ground;
   // The air in front of a surface ends at the bottom sphere: a coarse tile's
   // facets are chords that sag below it (km from high up). From 400 km the
   // march through the sag made the ground near the limb 5-8 % too bright.
   // Where the ground under the pixel lies below the datum, its air goes
-  // down to it (air_floor_radius).
-  if (depth > 0.0) {
-    float t_floor_near, t_floor_far;
-    if (ray_sphere(camera, dir, air_floor_radius(atmosphere), t_floor_near, t_floor_far) &&
-        t_floor_near > 0.0) {
-      t_surface = min(t_surface, t_floor_near);
-    }
-  }
+  // down to it (air_floor_radius). Open sky meets the bottom sphere.
+  float floor_r = depth > 0.0 ? air_floor_radius(atmosphere) : atmosphere.bottom_radius;
+  float t_ground_near, t_ground_far;
+  bool hits_ground =
+      ray_sphere(camera, dir, floor_r, t_ground_near, t_ground_far) && t_ground_near > 0.0;
+  bool open_sky = depth == 0.0 && !hits_ground;
+  if (depth > 0.0 && hits_ground) t_surface = min(t_surface, t_ground_near);
 
   // Froxels near, the per-pixel march beyond; blended over the last fifth
   // of the volume's range so that no edge shows on the ground.

@@ -42,20 +42,13 @@ void main() {
   if (in_atmosphere_ray) {
     float t_start = max(t_top_near, 0.0);
     float t_end = t_top_far;
+    // The air ends at the bottom sphere, or in front of a surface whose
+    // ground lies below the datum, down at that ground (air_floor_radius).
+    float floor_r = depth > 0.0 ? air_floor_radius(atmosphere) : atmosphere.bottom_radius;
     float t_ground_near, t_ground_far;
-    if (ray_sphere(camera, dir, atmosphere.bottom_radius, t_ground_near, t_ground_far) &&
-        t_ground_near > 0.0) {
+    if (ray_sphere(camera, dir, floor_r, t_ground_near, t_ground_far) && t_ground_near > 0.0) {
       hits_ground = true;
       t_end = min(t_end, t_ground_near);
-    }
-    // In front of a surface whose ground lies below the datum, the air
-    // goes down to it (air_floor_radius).
-    float floor_r = air_floor_radius(atmosphere);
-    if (depth > 0.0 && floor_r < atmosphere.bottom_radius) {
-      t_end = t_top_far;
-      if (ray_sphere(camera, dir, floor_r, t_ground_near, t_ground_far) && t_ground_near > 0.0) {
-        t_end = min(t_end, t_ground_near);
-      }
     }
     t_end = min(t_end, t_surface);
     // Rebase the march at the atmosphere's entry: from far away the
