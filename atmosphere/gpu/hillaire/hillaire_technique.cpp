@@ -282,7 +282,9 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
     glUniform1f(sky_view_program_.uniform("u_camera_r"), sky_view_r);
     glUniform3fv(sky_view_program_.uniform("u_sun_dir_local"), 1, glm::value_ptr(sun_local));
     bind_image(0, sky_view_lut_.id(), GL_RGBA16F, false);
-    glDispatchCompute(groups(shared::kSkyViewLutWidth), groups(shared::kSkyViewLutHeight), 1);
+    // Half the columns: each is written to its mirror image too.
+    static_assert(shared::kSkyViewLutWidth % 2 == 0, "the sky view's columns pair off");
+    glDispatchCompute(groups(shared::kSkyViewLutWidth / 2), groups(shared::kSkyViewLutHeight), 1);
     glMemoryBarrier(kLutBarrier);
     timer.end();
   } else if (lut_weight_ > 0.0) {

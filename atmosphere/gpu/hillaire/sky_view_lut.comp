@@ -2,6 +2,11 @@
 // full azimuth, in the local frame whose z is up and whose x points to the
 // sun's azimuth, at the camera's altitude. Below the horizon it holds the
 // air in front of the ground and the lit ground itself.
+//
+// The sky is the same on both sides of the sun's vertical plane (the LUT
+// holds no terrain), so that the azimuths phi and -phi, in columns x and
+// W - 1 - x, hold one value: half the columns are marched (phi < 0) and
+// each is written to its mirror image too.
 #include "atmosphere/gpu/hillaire/hillaire_common.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -12,7 +17,7 @@ uniform vec3 u_sun_dir_local;  // (sin, 0, cos) of the sun's zenith angle
 
 void main() {
   ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
-  if (texel.x >= kSkyViewLutWidth || texel.y >= kSkyViewLutHeight) return;
+  if (texel.x >= kSkyViewLutWidth / 2 || texel.y >= kSkyViewLutHeight) return;
   Atmosphere atmosphere = block_atmosphere();
   float u = (float(texel.x) + 0.5) / float(kSkyViewLutWidth);
   float v = (float(texel.y) + 0.5) / float(kSkyViewLutHeight);
@@ -28,4 +33,5 @@ void main() {
   integrate_scattering(atmosphere, origin, dir, 0.0, t_end, u_sun_dir_local, SKY_VIEW_STEPS,
                        kSourceSky, hits_ground, luminance, transmittance, f_ms);
   imageStore(u_output, texel, vec4(luminance, 1.0));
+  imageStore(u_output, ivec2(kSkyViewLutWidth - 1 - texel.x, texel.y), vec4(luminance, 1.0));
 }
