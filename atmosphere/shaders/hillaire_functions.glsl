@@ -169,9 +169,58 @@ Real3 forward_gain(IN(Atmosphere) atmosphere, Real nu, IN(Real3) tau) {
 // the whole sky and misses the sky's brightening toward the horizon. Each
 // phase's sum is held at zero where the truncated series would go
 // negative.
-Real3 scattered_field(IN(Atmosphere) atmosphere, bool previous_order, Real r, Real mu_s,
-                      IN(Real3) sigma_r, IN(Real3) sigma_m, IN(Real3) p, IN(Real3) d,
-                      IN(Real3) sun_dir) {
+// The field's parts at (u, v) of its table (multiple_scattering_lut_uv_from_r_mu_s),
+// the order before's or the multiple-scattering LUT's. Written out part by
+// part: as a loop over the parts, llvmpipe ran the scattering-orders pass
+// 2.2 times slower.
+FieldMoments field_at(bool previous_order, Real u, Real v) {
+  FieldMoments f;
+  f.part[0] = field_lookup(previous_order, u, v, 0);
+  f.part[1] = field_lookup(previous_order, u, v, 1);
+  f.part[2] = field_lookup(previous_order, u, v, 2);
+  f.part[3] = field_lookup(previous_order, u, v, 3);
+  f.part[4] = field_lookup(previous_order, u, v, 4);
+  f.part[5] = field_lookup(previous_order, u, v, 5);
+  f.part[6] = field_lookup(previous_order, u, v, 6);
+  f.part[7] = field_lookup(previous_order, u, v, 7);
+  f.part[8] = field_lookup(previous_order, u, v, 8);
+  f.part[9] = field_lookup(previous_order, u, v, 9);
+  f.part[10] = field_lookup(previous_order, u, v, 10);
+  f.part[11] = field_lookup(previous_order, u, v, 11);
+  f.part[12] = field_lookup(previous_order, u, v, 12);
+  f.part[13] = field_lookup(previous_order, u, v, 13);
+  f.part[14] = field_lookup(previous_order, u, v, 14);
+  return f;
+}
+
+FieldMoments no_field() {
+  FieldMoments f;
+  for (int k = 0; k < kFieldParts; ++k) f.part[k] = Real3(0.0);
+  return f;
+}
+
+// The field's parts at (u, v) of the multiple-scattering LUT for the point p.
+FieldMoments field_at_point(IN(Atmosphere) atmosphere, IN(Real3) p, IN(Real3) sun_dir) {
+  Real r = length(p);
+  Real u, v;
+  multiple_scattering_lut_uv_from_r_mu_s(atmosphere, r, clamp_cosine(dot(p, sun_dir) / r), u, v);
+  return field_at(false, u, v);
+}
+
+// The light of a field (the multiple-scattering LUT's, or the previous
+// order's) arriving at p, scattered toward a camera that looks along d.
+// By Funk-Hecke, a phase function with Legendre coefficients g_l (p = sum
+// of (2l + 1) / (4 pi) g_l P_l) scatters the field's degree l times g_l:
+// sigma times the sum over (l, m) of g_l f_lm B_lm(d). Rayleigh has g_0 =
+// 1, g_2 = 1/10 and no others, so the table scatters it exactly; Mie's g_l
+// past kFieldDegree are left to the glow's gain (forward_gain). Hillaire
+// keeps the mean alone, which spreads the forward glow of thick dust over
+// the whole sky and misses the sky's brightening toward the horizon. Each
+// phase's sum is held at zero where the truncated series would go
+// negative. `f` holds the field's parts where p lies (field_at).
+Real3 scattered_field_of(IN(Atmosphere) atmosphere, IN(FieldMoments) f, Real r,
+                         IN(Real3) sigma_r, IN(Real3) sigma_m, IN(Real3) p, IN(Real3) d,
+                         IN(Real3) sun_dir) {
   Real3 up = p / r;
   Real3 horizontal = sun_dir - up * dot(up, sun_dir);
   Real h = length(horizontal);
@@ -180,30 +229,30 @@ Real3 scattered_field(IN(Atmosphere) atmosphere, bool previous_order, Real r, Re
   // The field is even across the sun's vertical plane: the sign of y does
   // not matter.
   Real y = sqrt(max(Real(1.0) - z * z - x * x, Real(0.0)));
-  Real u, v;
-  multiple_scattering_lut_uv_from_r_mu_s(atmosphere, r, mu_s, u, v);
-  // Degree by degree, written out: as a loop over the parts, llvmpipe ran
-  // the scattering-orders pass 2.2 times slower.
-  Real3 degree_0 = field_lookup(previous_order, u, v, 0);
-  Real3 degree_1 = field_basis(1, x, y, z) * field_lookup(previous_order, u, v, 1) +
-                   field_basis(2, x, y, z) * field_lookup(previous_order, u, v, 2);
-  Real3 degree_2 = field_basis(3, x, y, z) * field_lookup(previous_order, u, v, 3) +
-                   field_basis(4, x, y, z) * field_lookup(previous_order, u, v, 4) +
-                   field_basis(5, x, y, z) * field_lookup(previous_order, u, v, 5);
-  Real3 degree_3 = field_basis(6, x, y, z) * field_lookup(previous_order, u, v, 6) +
-                   field_basis(7, x, y, z) * field_lookup(previous_order, u, v, 7) +
-                   field_basis(8, x, y, z) * field_lookup(previous_order, u, v, 8) +
-                   field_basis(9, x, y, z) * field_lookup(previous_order, u, v, 9);
-  Real3 degree_4 = field_basis(10, x, y, z) * field_lookup(previous_order, u, v, 10) +
-                   field_basis(11, x, y, z) * field_lookup(previous_order, u, v, 11) +
-                   field_basis(12, x, y, z) * field_lookup(previous_order, u, v, 12) +
-                   field_basis(13, x, y, z) * field_lookup(previous_order, u, v, 13) +
-                   field_basis(14, x, y, z) * field_lookup(previous_order, u, v, 14);
+  Real3 degree_0 = f.part[0];
+  Real3 degree_1 = field_basis(1, x, y, z) * f.part[1] + field_basis(2, x, y, z) * f.part[2];
+  Real3 degree_2 = field_basis(3, x, y, z) * f.part[3] + field_basis(4, x, y, z) * f.part[4] +
+                   field_basis(5, x, y, z) * f.part[5];
+  Real3 degree_3 = field_basis(6, x, y, z) * f.part[6] + field_basis(7, x, y, z) * f.part[7] +
+                   field_basis(8, x, y, z) * f.part[8] + field_basis(9, x, y, z) * f.part[9];
+  Real3 degree_4 = field_basis(10, x, y, z) * f.part[10] + field_basis(11, x, y, z) * f.part[11] +
+                   field_basis(12, x, y, z) * f.part[12] + field_basis(13, x, y, z) * f.part[13] +
+                   field_basis(14, x, y, z) * f.part[14];
   Real3 rayleigh = degree_0 + Real(0.1) * degree_2;
   Real3 mie = degree_0 + mie_legendre(atmosphere, 1) * degree_1 +
               mie_legendre(atmosphere, 2) * degree_2 + mie_legendre(atmosphere, 3) * degree_3 +
               mie_legendre(atmosphere, 4) * degree_4;
   return sigma_r * max(rayleigh, Real3(0.0)) + sigma_m * max(mie, Real3(0.0));
+}
+
+// The same, the field read where p lies.
+Real3 scattered_field(IN(Atmosphere) atmosphere, bool previous_order, Real r, Real mu_s,
+                      IN(Real3) sigma_r, IN(Real3) sigma_m, IN(Real3) p, IN(Real3) d,
+                      IN(Real3) sun_dir) {
+  Real u, v;
+  multiple_scattering_lut_uv_from_r_mu_s(atmosphere, r, mu_s, u, v);
+  return scattered_field_of(atmosphere, field_at(previous_order, u, v), r, sigma_r, sigma_m, p, d,
+                            sun_dir);
 }
 
 // One segment [t0, t1] of a ray o + t d, sampled at its middle. The source
@@ -212,9 +261,13 @@ Real3 scattered_field(IN(Atmosphere) atmosphere, bool previous_order, Real r, Re
 // (Hillaire 2015, "Physically Based and Unified Volumetric Rendering",
 // energy-conserving integration). f_ms integrates the scattering alone
 // (Hillaire 2020, eq. 8). Luminance is per unit solar irradiance.
-void accumulate_segment(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, Real t0, Real t1,
-                        IN(Real3) sun_dir, Real phase_r, Real phase_m, int source_kind,
-                        INOUT(Real3) luminance, INOUT(Real3) throughput, INOUT(Real3) f_ms) {
+// With `field_given`, the multiple-scattering LUT's field is `field`, read
+// once for a pair of segments (integrate_along), not at the segment's
+// middle.
+void accumulate_segment_in(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, Real t0, Real t1,
+                           IN(Real3) sun_dir, Real phase_r, Real phase_m, int source_kind,
+                           IN(FieldMoments) field, bool field_given, INOUT(Real3) luminance,
+                           INOUT(Real3) throughput, INOUT(Real3) f_ms) {
   Real ds = t1 - t0;
   Real3 p = o + (Real(0.5) * (t0 + t1)) * d;
   Real r = length(p);
@@ -248,7 +301,10 @@ void accumulate_segment(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, Rea
                              (Real(1.0) - lit) * direct;
 #endif
       if (source_kind == kSourceSky) {
-        source += scattered_field(atmosphere, false, r, mu_s, sigma_r, sigma_m, p, d, sun_dir);
+        source += field_given ? scattered_field_of(atmosphere, field, r, sigma_r, sigma_m, p, d,
+                                                   sun_dir)
+                              : scattered_field(atmosphere, false, r, mu_s, sigma_r, sigma_m, p,
+                                                d, sun_dir);
         // The glow's gain and the field's moments are truncated series:
         // where the light is peaked more than they hold (Mie g 0.99) they
         // ring below zero, and no light is less than none (the stability
@@ -264,6 +320,30 @@ void accumulate_segment(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, Rea
   throughput *= exp(-extinction * ds);
 }
 
+void accumulate_segment(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, Real t0, Real t1,
+                        IN(Real3) sun_dir, Real phase_r, Real phase_m, int source_kind,
+                        INOUT(Real3) luminance, INOUT(Real3) throughput, INOUT(Real3) f_ms) {
+  accumulate_segment_in(atmosphere, o, d, t0, t1, sun_dir, phase_r, phase_m, source_kind,
+                        no_field(), false, luminance, throughput, f_ms);
+}
+
+// Segment i of a ray's steps, steps_before of them crowding toward
+// t_closest from `before` ahead of it, the rest away from it over `after`.
+void segment_bounds(int i, int steps_before, int steps_after, Real t_closest, Real before,
+                    Real after, OUT(Real) t0, OUT(Real) t1) {
+  if (i < steps_before) {
+    Real a0 = Real(1.0) - Real(i) / Real(steps_before);
+    Real a1 = Real(1.0) - Real(i + 1) / Real(steps_before);
+    t0 = t_closest - before * a0 * a0;
+    t1 = t_closest - before * a1 * a1;
+  } else {
+    Real b0 = Real(i - steps_before) / Real(steps_after);
+    Real b1 = Real(i + 1 - steps_before) / Real(steps_after);
+    t0 = t_closest + after * b0 * b0;
+    t1 = t_closest + after * b1 * b1;
+  }
+}
+
 // Scattered luminance (per unit solar irradiance), transmittance and f_ms
 // along o + t d for t in [t_start, t_end], with `steps` segments. Segments
 // crowd (square law) toward the point of the range closest to the planet's
@@ -271,10 +351,16 @@ void accumulate_segment(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, Rea
 // ground, at the tangent point of a limb ray seen from space, at the ground
 // for a ray down. `ends_at_ground` adds the lit ground behind the ray: by
 // the sun, or for kSourceNextOrder by the previous order's sky light.
-void integrate_scattering(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, Real t_start,
-                          Real t_end, IN(Real3) sun_dir, int steps, int source_kind,
-                          bool ends_at_ground, OUT(Real3) luminance, OUT(Real3) transmittance,
-                          OUT(Real3) f_ms) {
+//
+// `field_per_pair` (kSourceSky, an even number of steps): the
+// multiple-scattering LUT's field is read once for each pair of segments,
+// at the pair's middle, and scattered at each segment's own point and
+// direction; it changes slowly along a ray, and its 15 reads were half the
+// cost of a step of the sky pass's march.
+void integrate_along(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, Real t_start,
+                     Real t_end, IN(Real3) sun_dir, int steps, int source_kind,
+                     bool field_per_pair, bool ends_at_ground, OUT(Real3) luminance,
+                     OUT(Real3) transmittance, OUT(Real3) f_ms) {
   luminance = Real3(0.0);
   transmittance = Real3(1.0);
   f_ms = Real3(0.0);
@@ -291,21 +377,21 @@ void integrate_scattering(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, R
   int steps_before =
       total > Real(0.0) ? int(floor(Real(steps) * before / total + Real(0.5))) : 0;
   int steps_after = steps - steps_before;
-  for (int i = 0; i < steps; ++i) {
+  for (int i = 0; i < steps; i += field_per_pair ? 2 : 1) {
     Real t0, t1;
-    if (i < steps_before) {
-      Real a0 = Real(1.0) - Real(i) / Real(steps_before);
-      Real a1 = Real(1.0) - Real(i + 1) / Real(steps_before);
-      t0 = t_closest - before * a0 * a0;
-      t1 = t_closest - before * a1 * a1;
+    segment_bounds(i, steps_before, steps_after, t_closest, before, after, t0, t1);
+    if (field_per_pair) {
+      Real t2, t3;
+      segment_bounds(i + 1, steps_before, steps_after, t_closest, before, after, t2, t3);
+      FieldMoments field = field_at_point(atmosphere, o + (Real(0.5) * (t0 + t3)) * d, sun_dir);
+      accumulate_segment_in(atmosphere, o, d, t0, t1, sun_dir, phase_r, phase_m, source_kind,
+                            field, true, luminance, transmittance, f_ms);
+      accumulate_segment_in(atmosphere, o, d, t2, t3, sun_dir, phase_r, phase_m, source_kind,
+                            field, true, luminance, transmittance, f_ms);
     } else {
-      Real b0 = Real(i - steps_before) / Real(steps_after);
-      Real b1 = Real(i + 1 - steps_before) / Real(steps_after);
-      t0 = t_closest + after * b0 * b0;
-      t1 = t_closest + after * b1 * b1;
+      accumulate_segment(atmosphere, o, d, t0, t1, sun_dir, phase_r, phase_m, source_kind,
+                         luminance, transmittance, f_ms);
     }
-    accumulate_segment(atmosphere, o, d, t0, t1, sun_dir, phase_r, phase_m, source_kind,
-                       luminance, transmittance, f_ms);
   }
   if (ends_at_ground) {
     Real3 p = o + t_end * d;
@@ -317,6 +403,14 @@ void integrate_scattering(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, R
       luminance += transmittance * ground_radiance(atmosphere, p, sun_dir);
     }
   }
+}
+
+void integrate_scattering(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, Real t_start,
+                          Real t_end, IN(Real3) sun_dir, int steps, int source_kind,
+                          bool ends_at_ground, OUT(Real3) luminance, OUT(Real3) transmittance,
+                          OUT(Real3) f_ms) {
+  integrate_along(atmosphere, o, d, t_start, t_end, sun_dir, steps, source_kind, false,
+                  ends_at_ground, luminance, transmittance, f_ms);
 }
 
 // The ray o + t d (o inside the top sphere) up to the top boundary or the

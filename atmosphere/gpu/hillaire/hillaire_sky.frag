@@ -65,7 +65,9 @@ int march_steps(Atmosphere atmosphere, vec3 origin, vec3 dir) {
   float depth = -log(max(min(transmittance.r, min(transmittance.g, transmittance.b)), 1e-30));
   int fewest = max(PER_PIXEL_STEPS / 4, 4);
   float f = clamp(depth / kFullStepsDepth, 0.0, 1.0);
-  return fewest + int(ceil(f * float(PER_PIXEL_STEPS - fewest)));
+  // Even: the march reads the multiple-scattering field once a pair.
+  int steps = fewest + int(ceil(f * float(PER_PIXEL_STEPS - fewest)));
+  return steps + (steps & 1);
 }
 
 // A march from the camera over [0, t_max] of the ray: luminance (with the
@@ -86,9 +88,9 @@ void march(vec3 camera, vec3 dir, float t_max, bool with_ground, out vec3 lumina
   if (t_end <= t_start) return;
   vec3 origin = camera + t_start * dir;
   vec3 f_ms;
-  integrate_scattering(atmosphere, origin, dir, 0.0, t_end - t_start, u_sun_dir,
-                       march_steps(atmosphere, origin, dir), kSourceSky, with_ground, luminance,
-                       transmittance, f_ms);
+  integrate_along(atmosphere, origin, dir, 0.0, t_end - t_start, u_sun_dir,
+                  march_steps(atmosphere, origin, dir), kSourceSky, true, with_ground, luminance,
+                  transmittance, f_ms);
   luminance *= atmosphere.solar_irradiance;
 }
 
