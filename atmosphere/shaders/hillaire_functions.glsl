@@ -158,17 +158,6 @@ Real3 forward_gain(IN(Atmosphere) atmosphere, Real nu, IN(Real3) tau) {
                         forward_gain_lookup(atmosphere, nu, t.z));
 }
 
-// The light of a field (the multiple-scattering LUT's, or the previous
-// order's) arriving at p, scattered toward a camera that looks along d.
-// By Funk-Hecke, a phase function with Legendre coefficients g_l (p = sum
-// of (2l + 1) / (4 pi) g_l P_l) scatters the field's degree l times g_l:
-// sigma times the sum over (l, m) of g_l f_lm B_lm(d). Rayleigh has g_0 =
-// 1, g_2 = 1/10 and no others, so the table scatters it exactly; Mie's g_l
-// past kFieldDegree are left to the glow's gain (forward_gain). Hillaire
-// keeps the mean alone, which spreads the forward glow of thick dust over
-// the whole sky and misses the sky's brightening toward the horizon. Each
-// phase's sum is held at zero where the truncated series would go
-// negative.
 // The field's parts at (u, v) of its table (multiple_scattering_lut_uv_from_r_mu_s),
 // the order before's or the multiple-scattering LUT's. Written out part by
 // part: as a loop over the parts, llvmpipe ran the scattering-orders pass
@@ -193,6 +182,7 @@ FieldMoments field_at(bool previous_order, Real u, Real v) {
   return f;
 }
 
+// No field: what accumulate_segment passes where it reads the field itself.
 FieldMoments no_field() {
   FieldMoments f;
   for (int k = 0; k < kFieldParts; ++k) f.part[k] = Real3(0.0);
