@@ -24,6 +24,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include <map>
+#include <set>
 
 namespace planet {
 namespace {
@@ -136,6 +137,49 @@ BENCHMARK_CAPTURE(BM_HillaireSky, far_40000km,
     ->UseManualTime()
     ->Unit(benchmark::kMillisecond)
     ->Iterations(3);
+
+// A model change in hillaire: the three tables that depend on the model
+// alone (transmittance, the orders' multiple-scattering LUT, the glow's
+// forward gain), recomputed in the frame after set_atmosphere, each pass's
+// wall time (the GL idle before and after it). Manual time is their sum:
+// against BrunetonPrecompute/default in the same run, the model
+// change ratio.
+//
+//   planet bench --benchmark_filter='HillaireModelChange|BrunetonPrecompute/default'
+void BM_HillaireModelChange(benchmark::State& state) {
+  auto context = GlContext::create_headless();
+  Body body = load_body(data_dir() / "planets" / "earth.json");
+  AtmosphereModel model = load_atmosphere(body);
+  FrameRenderer renderer(320, 180);
+  renderer.set_synchronous_timing(true);
+  renderer.set_body(body, model, std::make_unique<HillaireTechnique>());
+  Geodesy geodesy(body.shape);
+  const Geodetic place{glm::radians(46.5), glm::radians(8.0), 2.0};
+  Camera camera = geodesy.camera_at(place, 0.0, glm::radians(10.0), glm::radians(60.0));
+  glm::dvec3 sun = geodesy.body_from_enu(place) * glm::normalize(glm::dvec3(0.3, 0.5, 0.6));
+  renderer.render(camera, sun, 10.0);  // compiles; not timed
+  const std::set<std::string> model_passes = {"transmittance_lut", "multiple_scattering_lut",
+                                              "forward_gain_lut"};
+  std::map<std::string, double> pass_ms;
+  double scale = 1.0;
+  for (auto _ : state) {
+    // A model no table holds yet: the scattering a millionth stronger.
+    scale *= 1.000001;
+    renderer.set_atmosphere(with_scattering_scaled(model, scale));
+    FrameStats stats = renderer.render(camera, sun, 10.0);
+    double ms = 0;
+    for (const PassTiming& p : stats.passes) {
+      if (!model_passes.count(p.pass) || p.reused) continue;
+      pass_ms[p.pass] += p.wall_ms;
+      ms += p.wall_ms;
+    }
+    state.SetIterationTime(ms * 1e-3);
+  }
+  for (const auto& [pass, ms] : pass_ms) {
+    state.counters[pass + "_ms"] = ms / double(state.iterations());
+  }
+}
+BENCHMARK(BM_HillaireModelChange)->UseManualTime()->Unit(benchmark::kMillisecond)->Iterations(3);
 
 }  // namespace
 }  // namespace planet
