@@ -52,6 +52,11 @@ const int kSourceNextOrder = 3;
 const int kSourceSunRayleigh = 4;
 const int kSourceSunMie = 5;
 
+// Where integrate_along reads the field along a ray (see there).
+const int kFieldEachStep = 0;
+const int kFieldPerPair = 1;
+const int kFieldInterpolated = 2;
+
 // The light of an order (or of all higher orders) arriving at a point, as
 // its spherical-harmonic coefficients over the sphere of directions w
 // looked along, in the local frame of the zenith (z), the sun's horizontal

@@ -182,19 +182,14 @@ FieldMoments field_at(bool previous_order, Real u, Real v) {
   return f;
 }
 
-// No field: what accumulate_segment passes where it reads the field itself.
-FieldMoments no_field() {
-  FieldMoments f;
-  for (int k = 0; k < kFieldParts; ++k) f.part[k] = Real3(0.0);
-  return f;
-}
-
-// The field's parts at (u, v) of the multiple-scattering LUT for the point p.
-FieldMoments field_at_point(IN(Atmosphere) atmosphere, IN(Real3) p, IN(Real3) sun_dir) {
+// The field's parts for the point p, from the order before's table or the
+// multiple-scattering LUT.
+FieldMoments field_at_point(IN(Atmosphere) atmosphere, bool previous_order, IN(Real3) p,
+                            IN(Real3) sun_dir) {
   Real r = length(p);
   Real u, v;
   multiple_scattering_lut_uv_from_r_mu_s(atmosphere, r, clamp_cosine(dot(p, sun_dir) / r), u, v);
-  return field_at(false, u, v);
+  return field_at(previous_order, u, v);
 }
 
 // The light of a field (the multiple-scattering LUT's, or the previous
@@ -207,10 +202,11 @@ FieldMoments field_at_point(IN(Atmosphere) atmosphere, IN(Real3) p, IN(Real3) su
 // keeps the mean alone, which spreads the forward glow of thick dust over
 // the whole sky and misses the sky's brightening toward the horizon. Each
 // phase's sum is held at zero where the truncated series would go
-// negative. `f` holds the field's parts where p lies (field_at).
-Real3 scattered_field_of(IN(Atmosphere) atmosphere, IN(FieldMoments) f, Real r,
-                         IN(Real3) sigma_r, IN(Real3) sigma_m, IN(Real3) p, IN(Real3) d,
-                         IN(Real3) sun_dir) {
+// negative. `f` holds the field's parts where p lies (field_at), r is
+// |p|; `rayleigh` and `mie` are the light scattered per unit of each
+// scattering coefficient.
+void field_radiance(IN(Atmosphere) atmosphere, IN(FieldMoments) f, Real r, IN(Real3) p,
+                    IN(Real3) d, IN(Real3) sun_dir, OUT(Real3) rayleigh, OUT(Real3) mie) {
   Real3 up = p / r;
   Real3 horizontal = sun_dir - up * dot(up, sun_dir);
   Real h = length(horizontal);
@@ -228,11 +224,20 @@ Real3 scattered_field_of(IN(Atmosphere) atmosphere, IN(FieldMoments) f, Real r,
   Real3 degree_4 = field_basis(10, x, y, z) * f.part[10] + field_basis(11, x, y, z) * f.part[11] +
                    field_basis(12, x, y, z) * f.part[12] + field_basis(13, x, y, z) * f.part[13] +
                    field_basis(14, x, y, z) * f.part[14];
-  Real3 rayleigh = degree_0 + Real(0.1) * degree_2;
-  Real3 mie = degree_0 + mie_legendre(atmosphere, 1) * degree_1 +
-              mie_legendre(atmosphere, 2) * degree_2 + mie_legendre(atmosphere, 3) * degree_3 +
-              mie_legendre(atmosphere, 4) * degree_4;
-  return sigma_r * max(rayleigh, Real3(0.0)) + sigma_m * max(mie, Real3(0.0));
+  rayleigh = max(degree_0 + Real(0.1) * degree_2, Real3(0.0));
+  mie = max(degree_0 + mie_legendre(atmosphere, 1) * degree_1 +
+                mie_legendre(atmosphere, 2) * degree_2 + mie_legendre(atmosphere, 3) * degree_3 +
+                mie_legendre(atmosphere, 4) * degree_4,
+            Real3(0.0));
+}
+
+// The same, scattered by sigma_r and sigma_m.
+Real3 scattered_field_of(IN(Atmosphere) atmosphere, IN(FieldMoments) f, Real r,
+                         IN(Real3) sigma_r, IN(Real3) sigma_m, IN(Real3) p, IN(Real3) d,
+                         IN(Real3) sun_dir) {
+  Real3 rayleigh, mie;
+  field_radiance(atmosphere, f, r, p, d, sun_dir, rayleigh, mie);
+  return sigma_r * rayleigh + sigma_m * mie;
 }
 
 // The same, the field read where p lies.
@@ -251,13 +256,15 @@ Real3 scattered_field(IN(Atmosphere) atmosphere, bool previous_order, Real r, Re
 // (Hillaire 2015, "Physically Based and Unified Volumetric Rendering",
 // energy-conserving integration). f_ms integrates the scattering alone
 // (Hillaire 2020, eq. 8). Luminance is per unit solar irradiance.
-// With `field_given`, the multiple-scattering LUT's field is `field`, read
-// once for a pair of segments (integrate_along), not at the segment's
-// middle.
+// With `field_given`, the field's light (field_radiance, per unit of each
+// scattering coefficient) is `field_rayleigh` and `field_mie`, which
+// integrate_along read for more than one segment, and the segment reads no
+// field of its own.
 void accumulate_segment_in(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, Real t0, Real t1,
                            IN(Real3) sun_dir, Real phase_r, Real phase_m, int source_kind,
-                           IN(FieldMoments) field, bool field_given, INOUT(Real3) luminance,
-                           INOUT(Real3) throughput, INOUT(Real3) f_ms) {
+                           IN(Real3) field_rayleigh, IN(Real3) field_mie, bool field_given,
+                           INOUT(Real3) luminance, INOUT(Real3) throughput,
+                           INOUT(Real3) f_ms) {
   Real ds = t1 - t0;
   Real3 p = o + (Real(0.5) * (t0 + t1)) * d;
   Real r = length(p);
@@ -270,7 +277,9 @@ void accumulate_segment_in(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, 
   Real mu_s = clamp_cosine(dot(p, sun_dir) / r);
   Real3 source;
   if (source_kind == kSourceNextOrder) {
-    source = scattered_field(atmosphere, true, r, mu_s, sigma_r, sigma_m, p, d, sun_dir);
+    source = field_given ? sigma_r * field_rayleigh + sigma_m * field_mie
+                         : scattered_field(atmosphere, true, r, mu_s, sigma_r, sigma_m, p, d,
+                                           sun_dir);
   } else {
     Real3 sun = sun_visibility(atmosphere, r, mu_s);
     if (source_kind == kSourceIsotropicSun) {
@@ -291,8 +300,7 @@ void accumulate_segment_in(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, 
                              (Real(1.0) - lit) * direct;
 #endif
       if (source_kind == kSourceSky) {
-        source += field_given ? scattered_field_of(atmosphere, field, r, sigma_r, sigma_m, p, d,
-                                                   sun_dir)
+        source += field_given ? sigma_r * field_rayleigh + sigma_m * field_mie
                               : scattered_field(atmosphere, false, r, mu_s, sigma_r, sigma_m, p,
                                                 d, sun_dir);
         // The glow's gain and the field's moments are truncated series:
@@ -314,7 +322,7 @@ void accumulate_segment(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, Rea
                         IN(Real3) sun_dir, Real phase_r, Real phase_m, int source_kind,
                         INOUT(Real3) luminance, INOUT(Real3) throughput, INOUT(Real3) f_ms) {
   accumulate_segment_in(atmosphere, o, d, t0, t1, sun_dir, phase_r, phase_m, source_kind,
-                        no_field(), false, luminance, throughput, f_ms);
+                        Real3(0.0), Real3(0.0), false, luminance, throughput, f_ms);
 }
 
 // Segment i of a ray's steps, steps_before of them crowding toward
@@ -334,6 +342,14 @@ void segment_bounds(int i, int steps_before, int steps_after, Real t_closest, Re
   }
 }
 
+// The field's light (field_radiance) at o + t d, read there.
+void field_radiance_at(IN(Atmosphere) atmosphere, bool previous_order, IN(Real3) o, IN(Real3) d,
+                       Real t, IN(Real3) sun_dir, OUT(Real3) rayleigh, OUT(Real3) mie) {
+  Real3 p = o + t * d;
+  field_radiance(atmosphere, field_at_point(atmosphere, previous_order, p, sun_dir), length(p), p,
+                 d, sun_dir, rayleigh, mie);
+}
+
 // Scattered luminance (per unit solar irradiance), transmittance and f_ms
 // along o + t d for t in [t_start, t_end], with `steps` segments. Segments
 // crowd (square law) toward the point of the range closest to the planet's
@@ -342,15 +358,23 @@ void segment_bounds(int i, int steps_before, int steps_after, Real t_closest, Re
 // for a ray down. `ends_at_ground` adds the lit ground behind the ray: by
 // the sun, or for kSourceNextOrder by the previous order's sky light.
 //
-// `field_per_pair` (kSourceSky, an even number of steps): the
-// multiple-scattering LUT's field is read once for each pair of segments,
-// at the pair's middle, and scattered at each segment's own point and
-// direction; it changes slowly along a ray, and its 15 reads were half the
-// cost of a step of the sky pass's march.
+// `field_reads` says where the field (the multiple-scattering LUT's, or
+// for kSourceNextOrder the order before's) is read; it changes slowly
+// along a ray, and its 15 reads were half the cost of a step:
+//   kFieldEachStep: at every segment's middle;
+//   kFieldPerPair (an even number of steps): once for each pair of
+//     segments, at the pair's middle, and scattered at each segment's own
+//     point and direction (the sky pass's march);
+//   kFieldInterpolated: at the even segments' middles, and for each odd
+//     segment interpolated linearly along the ray between the reads either
+//     side of it (the last segment, with none after it, reads its own).
+//     The orders take it: held constant over a pair, the gather's 12 steps
+//     left the tenfold-dense Earth's blue 9.1 % off the ground truth where
+//     every step's read gave 4.0.
 void integrate_along(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, Real t_start,
-                     Real t_end, IN(Real3) sun_dir, int steps, int source_kind,
-                     bool field_per_pair, bool ends_at_ground, OUT(Real3) luminance,
-                     OUT(Real3) transmittance, OUT(Real3) f_ms) {
+                     Real t_end, IN(Real3) sun_dir, int steps, int source_kind, int field_reads,
+                     bool ends_at_ground, OUT(Real3) luminance, OUT(Real3) transmittance,
+                     OUT(Real3) f_ms) {
   luminance = Real3(0.0);
   transmittance = Real3(1.0);
   f_ms = Real3(0.0);
@@ -367,20 +391,61 @@ void integrate_along(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, Real t
   int steps_before =
       total > Real(0.0) ? int(floor(Real(steps) * before / total + Real(0.5))) : 0;
   int steps_after = steps - steps_before;
-  for (int i = 0; i < steps; i += field_per_pair ? 2 : 1) {
-    Real t0, t1;
-    segment_bounds(i, steps_before, steps_after, t_closest, before, after, t0, t1);
-    if (field_per_pair) {
-      Real t2, t3;
+  bool previous_order = source_kind == kSourceNextOrder;
+  if (field_reads == kFieldInterpolated) {
+    // The field's light at the last even segment's middle s_a (a_r, a_m)
+    // and at the next one's s_b (b_r, b_m). No branch inside the loop:
+    // llvmpipe runs both sides of one.
+    Real t0, t1, t2, t3;
+    segment_bounds(0, steps_before, steps_after, t_closest, before, after, t0, t1);
+    Real s_a = Real(0.5) * (t0 + t1);
+    Real3 a_r, a_m, b_r, b_m;
+    field_radiance_at(atmosphere, previous_order, o, d, s_a, sun_dir, a_r, a_m);
+    for (int i = 0; i + 2 < steps; i += 2) {
+      accumulate_segment_in(atmosphere, o, d, t0, t1, sun_dir, phase_r, phase_m, source_kind, a_r,
+                            a_m, true, luminance, transmittance, f_ms);
       segment_bounds(i + 1, steps_before, steps_after, t_closest, before, after, t2, t3);
-      FieldMoments field = field_at_point(atmosphere, o + (Real(0.5) * (t0 + t3)) * d, sun_dir);
-      accumulate_segment_in(atmosphere, o, d, t0, t1, sun_dir, phase_r, phase_m, source_kind,
-                            field, true, luminance, transmittance, f_ms);
+      segment_bounds(i + 2, steps_before, steps_after, t_closest, before, after, t0, t1);
+      Real s_b = Real(0.5) * (t0 + t1);
+      field_radiance_at(atmosphere, previous_order, o, d, s_b, sun_dir, b_r, b_m);
+      Real w = (Real(0.5) * (t2 + t3) - s_a) / max(s_b - s_a, Real(1e-6));
       accumulate_segment_in(atmosphere, o, d, t2, t3, sun_dir, phase_r, phase_m, source_kind,
-                            field, true, luminance, transmittance, f_ms);
-    } else {
-      accumulate_segment(atmosphere, o, d, t0, t1, sun_dir, phase_r, phase_m, source_kind,
-                         luminance, transmittance, f_ms);
+                            mix(a_r, b_r, w), mix(a_m, b_m, w), true, luminance, transmittance,
+                            f_ms);
+      a_r = b_r;
+      a_m = b_m;
+      s_a = s_b;
+    }
+    // The last pair: its odd segment, with no read after it, reads its own.
+    accumulate_segment_in(atmosphere, o, d, t0, t1, sun_dir, phase_r, phase_m, source_kind, a_r,
+                          a_m, true, luminance, transmittance, f_ms);
+    segment_bounds(steps - 1, steps_before, steps_after, t_closest, before, after, t2, t3);
+    field_radiance_at(atmosphere, previous_order, o, d, Real(0.5) * (t2 + t3), sun_dir, b_r, b_m);
+    accumulate_segment_in(atmosphere, o, d, t2, t3, sun_dir, phase_r, phase_m, source_kind, b_r,
+                          b_m, true, luminance, transmittance, f_ms);
+  } else {
+    bool per_pair = field_reads == kFieldPerPair;
+    for (int i = 0; i < steps; i += per_pair ? 2 : 1) {
+      Real t0, t1;
+      segment_bounds(i, steps_before, steps_after, t_closest, before, after, t0, t1);
+      if (per_pair) {
+        Real t2, t3;
+        segment_bounds(i + 1, steps_before, steps_after, t_closest, before, after, t2, t3);
+        FieldMoments field = field_at_point(atmosphere, previous_order,
+                                            o + (Real(0.5) * (t0 + t3)) * d, sun_dir);
+        Real3 p = o + (Real(0.5) * (t0 + t1)) * d;
+        Real3 field_r, field_m;
+        field_radiance(atmosphere, field, length(p), p, d, sun_dir, field_r, field_m);
+        accumulate_segment_in(atmosphere, o, d, t0, t1, sun_dir, phase_r, phase_m, source_kind,
+                              field_r, field_m, true, luminance, transmittance, f_ms);
+        p = o + (Real(0.5) * (t2 + t3)) * d;
+        field_radiance(atmosphere, field, length(p), p, d, sun_dir, field_r, field_m);
+        accumulate_segment_in(atmosphere, o, d, t2, t3, sun_dir, phase_r, phase_m, source_kind,
+                              field_r, field_m, true, luminance, transmittance, f_ms);
+      } else {
+        accumulate_segment(atmosphere, o, d, t0, t1, sun_dir, phase_r, phase_m, source_kind,
+                           luminance, transmittance, f_ms);
+      }
     }
   }
   if (ends_at_ground) {
@@ -399,7 +464,7 @@ void integrate_scattering(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, R
                           Real t_end, IN(Real3) sun_dir, int steps, int source_kind,
                           bool ends_at_ground, OUT(Real3) luminance, OUT(Real3) transmittance,
                           OUT(Real3) f_ms) {
-  integrate_along(atmosphere, o, d, t_start, t_end, sun_dir, steps, source_kind, false,
+  integrate_along(atmosphere, o, d, t_start, t_end, sun_dir, steps, source_kind, kFieldEachStep,
                   ends_at_ground, luminance, transmittance, f_ms);
 }
 

@@ -159,9 +159,9 @@ FieldMoments gather_order(IN(Atmosphere) atmosphere, Real r, Real mu_s, int sour
       bool hits_ground;
       ray_extent_inside(atmosphere, o, d, t_end, hits_ground);
       Real3 luminance, transmittance, f_ms;
-      integrate_scattering(atmosphere, o, d, Real(0.0), t_end, sun_dir, kMultipleScatteringSteps,
-                           kind, hits_ground && !ground_irradiance, luminance, transmittance,
-                           f_ms);
+      integrate_along(atmosphere, o, d, Real(0.0), t_end, sun_dir, kMultipleScatteringSteps, kind,
+                      kind == kSourceNextOrder ? kFieldInterpolated : kFieldEachStep,
+                      hits_ground && !ground_irradiance, luminance, transmittance, f_ms);
       add_to_moments(f, (mirror * weight / Real(n)) * luminance, d, ground_irradiance);
     }
   }
