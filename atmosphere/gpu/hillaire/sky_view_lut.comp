@@ -30,8 +30,8 @@ void main() {
   bool hits_ground;
   ray_extent_inside(atmosphere, origin, dir, t_end, hits_ground);
   vec3 luminance, transmittance, f_ms;
-  integrate_scattering(atmosphere, origin, dir, 0.0, t_end, u_sun_dir_local, SKY_VIEW_STEPS,
-                       kSourceSky, hits_ground, luminance, transmittance, f_ms);
+  integrate_along(atmosphere, origin, dir, 0.0, t_end, u_sun_dir_local, SKY_VIEW_STEPS, kSourceSky,
+                  kFieldInterpolated, hits_ground, luminance, transmittance, f_ms);
   imageStore(u_output, texel, vec4(luminance, 1.0));
   imageStore(u_output, ivec2(kSkyViewLutWidth - 1 - texel.x, texel.y), vec4(luminance, 1.0));
 }
