@@ -99,6 +99,9 @@ void run(const FlyArgs& args) {
       "%d x %d window\n",
       frames, seconds, frames / std::max(seconds, 1e-9), hud_size.first, hud_size.second,
       args.width, args.height);
+  std::printf("each pass, its mean GPU time over the frames it ran (timer queries: on "
+              "llvmpipe they miss what runs in the calling thread):\n%s",
+              session.passes().summary().c_str());
 }
 
 }  // namespace

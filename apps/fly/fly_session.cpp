@@ -111,6 +111,7 @@ bool FlySession::frame(double real_dt) {
   }
   renderer_->set_star_orientation(body_from_icrf(body_, clock_.utc()));
   stats_ = renderer_->render(cam, sun, exposure_);
+  tally_.add(stats_.passes);
   blit();
   apply(hud_.draw(hud_view(cam, sun, real_dt)));
   {

@@ -4,6 +4,7 @@
 // clock in fixed steps, the renderer, recording and screenshots.
 #include "apps/fly/fly_hud.h"
 #include "apps/fly/fly_input.h"
+#include "gl/pass_tally.h"
 #include "gl/texture.h"
 #include "render/frame.h"
 #include "render/governor.h"
@@ -53,6 +54,8 @@ class FlySession {
 
   // One frame of the program: input, fixed steps, render, HUD. False to quit.
   bool frame(double real_dt);
+  // Every frame's passes so far.
+  const PassTally& passes() const { return tally_; }
 
  private:
   Camera camera() const;
@@ -93,6 +96,7 @@ class FlySession {
   ScriptedFlight* scripted_ = nullptr;  // the controller, when flying a script
   std::unique_ptr<FlightRecorder> recorder_;
   FrameStats stats_;
+  PassTally tally_;
   long steps_ = 0;
   int screenshots_ = 0, flights_ = 0;
   float lod_pixels_ = 1.0f;

@@ -1,0 +1,40 @@
+// The passes of many frames, summed as fly prints them when it closes.
+#include "gl/pass_tally.h"
+
+#include <gtest/gtest.h>
+
+namespace planet {
+namespace {
+
+PassTiming ran(const std::string& pass, double gpu_ms) { return {pass, gpu_ms, 0.0, false, false}; }
+PassTiming reused(const std::string& pass) { return {pass, 0.0, 0.0, true, false}; }
+
+TEST(PassTallyTest, MeansOverTheFramesEachPassRanCostliestFirst) {
+  PassTally tally;
+  tally.add({ran("sky_view_lut", 20.0), ran("sky", 30.0), ran("surface", 10.0)});
+  tally.add({reused("sky_view_lut"), ran("sky", 50.0), ran("surface", 14.0)});
+  tally.add({reused("sky_view_lut"), ran("sky", 40.0), ran("surface", 12.0)});
+  EXPECT_EQ(tally.frames(), 3);
+  const PassTally::Pass& view = tally.passes().at("sky_view_lut");
+  EXPECT_EQ(view.ran, 1);
+  EXPECT_EQ(view.reused, 2);
+  EXPECT_DOUBLE_EQ(view.gpu_ms, 20.0);
+  // sky 40 ms a frame, then the view's 20 (over the one frame it ran, not
+  // three), then the surfaces' 12.
+  EXPECT_EQ(tally.summary(),
+            "  sky              40.00 ms  ran 3 of 3\n"
+            "  sky_view_lut     20.00 ms  ran 1 of 3, reused 2\n"
+            "  surface          12.00 ms  ran 3 of 3\n");
+}
+
+TEST(PassTallyTest, WallTimeWhereTheTimerWasSynchronous) {
+  PassTally tally;
+  tally.add({{"sky", 1e-6, 80.0, false, false}});
+  tally.add({{"sky", 1e-6, 100.0, false, false}});
+  EXPECT_EQ(tally.summary(), "  sky     90.00 ms  ran 2 of 2\n");
+}
+
+TEST(PassTallyTest, NoFramesNoLines) { EXPECT_EQ(PassTally().summary(), ""); }
+
+}  // namespace
+}  // namespace planet
