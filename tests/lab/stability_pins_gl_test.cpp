@@ -44,15 +44,17 @@ const Pin kPins[] = {
     {"stability-earth-d50", "hillaire2020", StabilityClass::kExploded, {44.9, 206, 113}, "50x"},
     // Ours: the orders above the sixth and their tail in dense air; the
     // Martian sunset's dust.
-    {"stability-earth-d50", "hillaire", StabilityClass::kInaccurate, {4.21, 37.3, 102}, "50x"},
-    {"stability-earth-d100", "hillaire", StabilityClass::kInaccurate, {24.2, 88.9, 104}, "100x"},
-    {"stability-mars-s2", "hillaire", StabilityClass::kInaccurate, {8.0, 5.72, 0.0}, "Mars, sun 2 deg up"},
+    // (At 50x, red was 4.21 % before the orders and the sky-view LUT read
+    // the field at every other step; the map's classes did not move.)
+    {"stability-earth-d50", "hillaire", StabilityClass::kInaccurate, {7.51, 37.7, 101}, "50x"},
+    {"stability-earth-d100", "hillaire", StabilityClass::kInaccurate, {26.0, 84.1, 104}, "100x"},
+    {"stability-mars-s2", "hillaire", StabilityClass::kInaccurate, {8.11, 5.8, 0.0}, "Mars, sun 2 deg up"},
     // ... and what the map found: the dust's strong forward scattering
     // (its field is of degree 4; past g 0.9 the light it cannot hold is
     // spread over the sky), and the sky 10 degrees after sunset.
-    {"stability-mars-g0.9", "hillaire", StabilityClass::kInaccurate, {17.9, 11.5, 5.4}, "Mars, g 0.9"},
-    {"stability-mars-g0.99", "hillaire", StabilityClass::kExploded, {503, 382, 146}, "Mars, g 0.99"},
-    {"stability-earth-s-10", "hillaire", StabilityClass::kInaccurate, {7.0, 1.7, 3.3}, "sun 10 deg down"},
+    {"stability-mars-g0.9", "hillaire", StabilityClass::kInaccurate, {19.1, 11.9, 5.63}, "Mars, g 0.9"},
+    {"stability-mars-g0.99", "hillaire", StabilityClass::kExploded, {506, 383, 146}, "Mars, g 0.99"},
+    {"stability-earth-s-10", "hillaire", StabilityClass::kInaccurate, {6.97, 1.6, 3.1}, "sun 10 deg down"},
     // The single-scattering techniques in dense air: the frame's estimate of
     // the sky's light on the ground has no attenuation of its own.
     {"stability-earth-d100", "raymarch", StabilityClass::kExploded, {139, 4230, 257}, "100x"},
