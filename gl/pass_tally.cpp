@@ -37,8 +37,8 @@ std::string PassTally::summary() const {
                    [](const Row& a, const Row& b) { return a.mean_ms > b.mean_ms; });
   std::string out;
   for (const Row& r : rows) {
-    out += fmt::format("  {:<{}}  {:8.2f} ms  ran {} of {}", r.name, width, r.mean_ms,
-                       r.pass->ran, frames_);
+    out += fmt::format("  {:<{}}  {:8.2f} ms  ran {} of {}", r.name, width, r.mean_ms, r.pass->ran,
+                       frames_);
     if (r.pass->reused > 0) out += fmt::format(", reused {}", r.pass->reused);
     out += "\n";
   }

@@ -89,8 +89,8 @@ void march(vec3 camera, vec3 dir, float t_max, bool with_ground, out vec3 lumina
   vec3 origin = camera + t_start * dir;
   vec3 f_ms;
   integrate_along(atmosphere, origin, dir, 0.0, t_end - t_start, u_sun_dir,
-                  march_steps(atmosphere, origin, dir), kSourceSky, kFieldPerPair, with_ground, luminance,
-                  transmittance, f_ms);
+                  march_steps(atmosphere, origin, dir), kSourceSky, kFieldPerPair, with_ground,
+                  luminance, transmittance, f_ms);
   luminance *= atmosphere.solar_irradiance;
 }
 
