@@ -27,6 +27,6 @@ check() {  # check TECHNIQUE R G B: the relative RMSE per channel, to 0.05 point
     END { exit bad || n != 3 }' "$work/$technique.txt" || { failed=1; cat "$work/$technique.txt"; }
 }
 check raymarch 22.08 31.71 50.04
-check hillaire 2.09 0.99 0.29
+check hillaire 2.09 0.96 0.45
 [ "$failed" -eq 0 ] && echo "ok: planet accuracy gives the README's figures, debiased within its interval"
 exit $failed

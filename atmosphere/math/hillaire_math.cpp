@@ -12,9 +12,11 @@ using namespace shared;
 
 namespace {
 
-// The table that scattering_order_lookup and ground_order_lookup read, for
-// the one call of gather_order_from in progress on this thread.
+// The table that scattering_order_lookup and ground_order_lookup read, and
+// the order it holds, for the one call of gather_order_from in progress on
+// this thread.
 thread_local const float* t_previous_order = nullptr;
+thread_local int t_previous_order_number = 0;
 
 Real3 sample_table(const float* table, int width, int height, Real u, Real v) {
   Real x = glm::clamp(u * width - 0.5, 0.0, double(width - 1));
@@ -54,16 +56,22 @@ Real terrain_sun_visibility(IN(Real3)) { return Real(1.0); }
 
 Real3 scattering_order_lookup(Real u, Real v, int part) {
   if (!t_previous_order) return Real3(0.0);
-  const int w = kMultipleScatteringLutWidth, h = kMultipleScatteringLutHeight;
-  return sample_table(t_previous_order, kFieldParts * w, h + 1, (part + u) / kFieldParts,
-                      v * h / (h + 1));
+  const int w = scattering_order_width(t_previous_order_number);
+  const int h = scattering_order_height(t_previous_order_number);
+  const Real pu = regrid_texture_coord(u, kMultipleScatteringLutWidth, w);
+  const Real pv = regrid_texture_coord(v, kMultipleScatteringLutHeight, h);
+  return sample_table(t_previous_order, kFieldParts * w, h + 1, (part + pu) / kFieldParts,
+                      pv * h / (h + 1));
 }
 
 Real3 ground_order_lookup(IN(Atmosphere), Real mu_s) {
   if (!t_previous_order) return Real3(0.0);
-  const int w = kMultipleScatteringLutWidth, h = kMultipleScatteringLutHeight;
-  return sample_table(t_previous_order, kFieldParts * w, h + 1,
-                      ground_irradiance_lut_u_from_mu_s(mu_s) / kFieldParts, (h + 0.5) / (h + 1));
+  const int w = scattering_order_width(t_previous_order_number);
+  const int h = scattering_order_height(t_previous_order_number);
+  const Real u =
+      regrid_texture_coord(ground_irradiance_lut_u_from_mu_s(mu_s), kMultipleScatteringLutWidth, w);
+  return sample_table(t_previous_order, kFieldParts * w, h + 1, u / kFieldParts,
+                      (h + 0.5) / (h + 1));
 }
 
 Real mie_column_lookup(IN(Atmosphere) atmosphere, Real r, Real mu) {
@@ -75,10 +83,12 @@ Real forward_gain_lookup(IN(Atmosphere) atmosphere, Real nu, Real tau) {
   return forward_gain_times_extinction(atmosphere.mie_g, atmosphere.mie_phase_hg, nu, tau);
 }
 
-FieldMoments gather_order_from(const float* previous_order, const Atmosphere& atmosphere, Real r,
-                               Real mu_s, int source_kind, bool ground_irradiance) {
+FieldMoments gather_order_from(const float* previous_order, int order, const Atmosphere& atmosphere,
+                               Real r, Real mu_s, bool ground_irradiance) {
   t_previous_order = previous_order;
-  FieldMoments f = gather_order(atmosphere, r, mu_s, source_kind, ground_irradiance);
+  t_previous_order_number = order - 1;
+  FieldMoments f = gather_order(
+      atmosphere, r, mu_s, order == 1 ? kSourceFirstOrder : kSourceNextOrder, ground_irradiance);
   t_previous_order = nullptr;
   return f;
 }

@@ -22,6 +22,9 @@ static_assert(kFieldDegree == 4, "field_basis and scattered_field are written ou
 // hillaire_functions.glsl, those the C++ side calls.
 void multiple_scattering_lut_r_mu_s_from_uv(const Atmosphere& atmosphere, Real u, Real v, Real& r,
                                             Real& mu_s);
+int scattering_order_width(int order);
+int scattering_order_height(int order);
+Real regrid_texture_coord(Real u, int from, int to);
 Real field_basis(int part, Real x, Real y, Real z);
 Real3 field_part(const FieldMoments& f, int part);
 Real forward_gain_times_extinction(Real g, Real hg, Real nu, Real tau);
@@ -32,13 +35,14 @@ Real ground_gather_radius(const Atmosphere& atmosphere);
 Real3 with_geometric_tail(const Real3& j_before_last, const Real3& j_last, const Real3& x_sum,
                           const Real3& x_last);
 
-// gather_order (the light of an order arriving at (r, mu_s), see there)
-// with the previous order read from `previous_order`: an RGBA float table
-// as the GPU holds it (HillaireTechnique::scattering_order_lut: the parts
-// side by side over h rows, the ground's irradiance in row h), sampled as
+// gather_order for order `order` (from 1: the light of that order arriving
+// at (r, mu_s), see there) with the order before read from
+// `previous_order`: an RGBA float table as the GPU holds it
+// (HillaireTechnique::scattering_order_lut: the parts side by side over h
+// rows of that order's grid, the ground's irradiance in row h), sampled as
 // GL samples a texture (bilinear between texel centres, clamped to the
 // edge). Null for the first order, which reads no table.
-FieldMoments gather_order_from(const float* previous_order, const Atmosphere& atmosphere, Real r,
-                               Real mu_s, int source_kind, bool ground_irradiance);
+FieldMoments gather_order_from(const float* previous_order, int order, const Atmosphere& atmosphere,
+                               Real r, Real mu_s, bool ground_irradiance);
 
 }  // namespace planet::hillaire

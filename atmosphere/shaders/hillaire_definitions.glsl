@@ -22,6 +22,11 @@ const int kFieldMean = 0;
 // eighth), and a tail from 4 orders made the red sky 2x too bright beyond
 // them; from 6 orders the tail is within 3 % of orders 7 and up.
 const int kScatteringOrders = 6;
+// The orders gathered on the multiple-scattering LUT's own grid; the later
+// ones, which every order before has smoothed, on kCoarseOrderWidth x
+// kCoarseOrderHeight texels (lut_sizes.glsl), read by the next order and
+// the sum between their texels.
+const int kFineScatteringOrders = 2;
 // 8 x 8 stratified directions over the sphere (Hillaire 2020, sec. 5.5: 64).
 const int kMultipleScatteringDirectionsSqrt = 8;
 // Segments per gathered ray: from 20 to 12 no canonical sky moved by more

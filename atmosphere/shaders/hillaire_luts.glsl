@@ -23,6 +23,23 @@ void multiple_scattering_lut_r_mu_s_from_uv(IN(Atmosphere) atmosphere, Real u, R
   r = atmosphere.bottom_radius + x_r * (atmosphere.top_radius - atmosphere.bottom_radius);
 }
 
+// Order n of scattering (from 1) is held on a grid of this many texels over
+// the same mapping: the LUT's own for the first kFineScatteringOrders, a
+// coarser one for the rest.
+int scattering_order_width(int order) {
+  return order <= kFineScatteringOrders ? kMultipleScatteringLutWidth : kCoarseOrderWidth;
+}
+int scattering_order_height(int order) {
+  return order <= kFineScatteringOrders ? kMultipleScatteringLutHeight : kCoarseOrderHeight;
+}
+
+// A texture coordinate on a grid of `from` texels to the coordinate of the
+// same point on a grid of `to` texels over the same range (both
+// texel-centred).
+Real regrid_texture_coord(Real u, int from, int to) {
+  return texture_coord_from_unit_range(unit_range_from_texture_coord(u, Real(from)), Real(to));
+}
+
 // The ground-irradiance table: one row over mu_s, the same mapping.
 Real ground_irradiance_lut_u_from_mu_s(Real mu_s) {
   return texture_coord_from_unit_range(sky_irradiance_u_from_mu_s(mu_s), Real(kMultipleScatteringLutWidth));

@@ -10,6 +10,10 @@ const int kTransmittanceLutHeight = 64;
 // ground's sky-irradiance table has its width, over the same mu_s.
 const int kMultipleScatteringLutWidth = 128;
 const int kMultipleScatteringLutHeight = 32;
+// The orders of scattering past kFineScatteringOrders
+// (hillaire_definitions.glsl) over the same (mu_s, r), on a coarser grid.
+const int kCoarseOrderWidth = 32;
+const int kCoarseOrderHeight = 32;
 // The forward-gain LUT: nu (u) by Mie scattering optical depth (v).
 const int kForwardGainLutWidth = 256;
 const int kForwardGainLutHeight = 64;

@@ -189,22 +189,50 @@ TEST_F(HillaireGLTest, PaperMultipleScatteringLutMatchesCpuIntegral) {
 }
 
 // The orders of scattering: each GPU order (its moments and the ground's
-// irradiance) against the CPU's integral of the same order from the GPU's
-// previous one (read back, so that an error cannot hide by compounding),
-// and the LUT against their sum.
+// irradiance, on its own grid) against the CPU's integral of the same
+// order from the GPU's previous one (read back, so that an error cannot
+// hide by compounding), and the LUT against their sum.
 TEST_F(HillaireGLTest, ScatteringOrdersMatchCpuIntegrals) {
   HillaireTechnique* technique = make_renderer();
   render({glm::radians(46.5), glm::radians(8.0), 2.0}, 0.0, 10.0, 30.0, 180.0);
   const int w = shared::kMultipleScatteringLutWidth, h = shared::kMultipleScatteringLutHeight;
   const int width = hillaire::kFieldParts * w;
-  std::vector<std::vector<float>> orders;
-  for (int k = 1; k <= hillaire::kScatteringOrders; ++k) {
-    orders.push_back(read_texture(technique->scattering_order_lut(k), width, h + 1));
-  }
-  auto texel = [&](const std::vector<float>& table, int x, int y) {
-    const float* t = &table[(size_t(y) * size_t(width) + size_t(x)) * 4];
-    return glm::dvec3(t[0], t[1], t[2]);
+  // Some orders on the LUT's grid and some on a coarser one, or this test
+  // checks one of the two alone.
+  ASSERT_EQ(hillaire::scattering_order_width(1), w);
+  ASSERT_LT(hillaire::scattering_order_width(hillaire::kScatteringOrders), w);
+  struct Order {
+    int w, h;
+    std::vector<float> table;
+    glm::dvec3 at(int x, int y) const {
+      const float* t = &table[(size_t(y) * size_t(hillaire::kFieldParts * w) + size_t(x)) * 4];
+      return glm::dvec3(t[0], t[1], t[2]);
+    }
+    // Part `part` at the LUT's texel (x, y) (y = h of the LUT: the ground's
+    // row), bilinear between the order's own texels.
+    glm::dvec3 at_lut_texel(int part, int x, int y, int lut_w, int lut_h) const {
+      if (w == lut_w && h == lut_h) return at(x + part * w, y);
+      double u = hillaire::regrid_texture_coord((x + 0.5) / lut_w, lut_w, w);
+      double px = std::clamp(u * w - 0.5, 0.0, double(w - 1));
+      double py = h;
+      if (y < lut_h) {
+        double v = hillaire::regrid_texture_coord((y + 0.5) / lut_h, lut_h, h);
+        py = std::clamp(v * h - 0.5, 0.0, double(h - 1));
+      }
+      int x0 = int(px), y0 = int(py);
+      int x1 = std::min(x0 + 1, w - 1), y1 = y < lut_h ? std::min(y0 + 1, h - 1) : y0;
+      double fx = px - x0, fy = py - y0;
+      return glm::mix(glm::mix(at(part * w + x0, y0), at(part * w + x1, y0), fx),
+                      glm::mix(at(part * w + x0, y1), at(part * w + x1, y1), fx), fy);
+    }
   };
+  std::vector<Order> orders;
+  for (int k = 1; k <= hillaire::kScatteringOrders; ++k) {
+    const int ow = hillaire::scattering_order_width(k), oh = hillaire::scattering_order_height(k);
+    orders.push_back(
+        {ow, oh,
+         read_texture(technique->scattering_order_lut(k), hillaire::kFieldParts * ow, oh + 1)});
+  }
   // Same allowance as the paper's LUT (bilinear transmittance, and here
   // the previous order, on the GPU against exact values on the CPU), on
   // the scale of the mean for the other terms, which can pass through zero.
@@ -219,50 +247,67 @@ TEST_F(HillaireGLTest, ScatteringOrdersMatchCpuIntegrals) {
     }
   };
   for (int k = 1; k <= hillaire::kScatteringOrders; ++k) {
-    const int source = k == 1 ? hillaire::kSourceFirstOrder : hillaire::kSourceNextOrder;
-    const std::vector<float>& gpu = orders[size_t(k - 1)];
-    const float* previous = k > 1 ? orders[size_t(k - 2)].data() : nullptr;
-    for (int x = 0; x < w; x += 9) {
+    const Order& gpu = orders[size_t(k - 1)];
+    const float* previous = k > 1 ? orders[size_t(k - 2)].table.data() : nullptr;
+    // The texel's centre on the LUT's grid, whose mapping the order shares.
+    auto lut_coord = [](int i, int from, int to) {
+      return hillaire::regrid_texture_coord((i + 0.5) / from, from, to);
+    };
+    for (int x = 0; x < gpu.w; x += gpu.w == w ? 9 : 3) {
       double r, mu_s;
-      hillaire::multiple_scattering_lut_r_mu_s_from_uv(atmosphere_, (x + 0.5) / w, 0.5 / h, r,
-                                                       mu_s);
-      glm::dvec3 e = hillaire::gather_order_from(previous, atmosphere_,
-                                                 hillaire::ground_gather_radius(atmosphere_), mu_s,
-                                                 source, true)
-                         .part[hillaire::kFieldMean];
-      check(e, texel(gpu, x, h), e, "E", k, x, h);
-      for (int y = 0; y < h; y += 5) {
-        hillaire::multiple_scattering_lut_r_mu_s_from_uv(atmosphere_, (x + 0.5) / w, (y + 0.5) / h,
-                                                         r, mu_s);
+      hillaire::multiple_scattering_lut_r_mu_s_from_uv(atmosphere_, lut_coord(x, gpu.w, w), 0.5 / h,
+                                                       r, mu_s);
+      glm::dvec3 e =
+          hillaire::gather_order_from(previous, k, atmosphere_,
+                                      hillaire::ground_gather_radius(atmosphere_), mu_s, true)
+              .part[hillaire::kFieldMean];
+      check(e, gpu.at(x, gpu.h), e, "E", k, x, gpu.h);
+      for (int y = 0; y < gpu.h; y += 5) {
+        hillaire::multiple_scattering_lut_r_mu_s_from_uv(atmosphere_, lut_coord(x, gpu.w, w),
+                                                         lut_coord(y, gpu.h, h), r, mu_s);
         hillaire::FieldMoments f =
-            hillaire::gather_order_from(previous, atmosphere_, r, mu_s, source, false);
+            hillaire::gather_order_from(previous, k, atmosphere_, r, mu_s, false);
         for (int part = 0; part < hillaire::kFieldParts; ++part) {
-          check(hillaire::field_part(f, part), texel(gpu, x + part * w, y),
+          check(hillaire::field_part(f, part), gpu.at(x + part * gpu.w, y),
                 f.part[hillaire::kFieldMean], "part", k, x, y);
         }
       }
     }
   }
   std::printf("scattering orders: worst error %.3f of the allowed\n", worst);
-  // The LUT is the sum with its tail, texel for texel.
+  // The LUT is the sum with its tail, texel for texel, each order read
+  // between its own texels where its grid is coarser.
   auto lut = read_texture(technique->multiple_scattering_lut(), width, h);
-  for (int y = 0; y < h; ++y) {
-    for (int x = 0; x < width; ++x) {
-      int mean_x = x % w;
-      glm::dvec3 all(0.0);
-      for (const auto& order : orders) all += texel(order, x, y);
-      const size_t last = orders.size() - 1;
-      glm::dvec3 sum = hillaire::with_geometric_tail(texel(orders[last - 1], mean_x, y),
-                                                     texel(orders[last], mean_x, y), all,
-                                                     texel(orders[last], x, y));
-      glm::dvec3 got = texel(lut, x, y);
-      for (int c = 0; c < 3; ++c) EXPECT_NEAR(got[c], sum[c], 1e-5 * std::abs(sum[c]) + 1e-12);
+  auto ground = read_texture(technique->ground_irradiance_lut(), w, 1);
+  auto sum_at = [&](int part, int x, int y) {
+    glm::dvec3 all(0.0);
+    for (const Order& order : orders) all += order.at_lut_texel(part, x, y, w, h);
+    const size_t last = orders.size() - 1;
+    return hillaire::with_geometric_tail(
+        orders[last - 1].at_lut_texel(hillaire::kFieldMean, x, y, w, h),
+        orders[last].at_lut_texel(hillaire::kFieldMean, x, y, w, h), all,
+        orders[last].at_lut_texel(part, x, y, w, h));
+  };
+  // In float on the GPU: on the scale of the mean, as above.
+  for (int x = 0; x < w; ++x) {
+    for (int y = 0; y <= h; ++y) {
+      const glm::dvec3 mean = sum_at(hillaire::kFieldMean, x, y);
+      for (int part = 0; part < (y < h ? hillaire::kFieldParts : 1); ++part) {
+        glm::dvec3 sum = sum_at(part, x, y);
+        const float* t = y < h ? &lut[(size_t(y) * size_t(width) + size_t(part * w + x)) * 4]
+                               : &ground[size_t(x) * 4];
+        for (int c = 0; c < 3; ++c) {
+          EXPECT_NEAR(t[c], sum[c], 1e-5 * std::abs(mean[c]) + 1e-12)
+              << "part " << part << " at texel " << x << ", " << y;
+        }
+      }
     }
   }
   // Later orders are weaker at the sunlit ground: the series converges.
   for (int c = 0; c < 3; ++c) {
     for (size_t k = 1; k < orders.size(); ++k) {
-      EXPECT_GT(texel(orders[k - 1], w - 1, 0)[c], texel(orders[k], w - 1, 0)[c]);
+      EXPECT_GT(orders[k - 1].at_lut_texel(hillaire::kFieldMean, w - 1, 0, w, h)[c],
+                orders[k].at_lut_texel(hillaire::kFieldMean, w - 1, 0, w, h)[c]);
     }
   }
 }
@@ -297,8 +342,8 @@ TEST_F(HillaireGLTest, NoNanOrInfFromTheGroundToDeepSpaceAndInsideThePlanet) {
       for (int k = 1; k <= hillaire::kScatteringOrders; ++k) {
         EXPECT_TRUE(
             all_finite(read_texture(technique->scattering_order_lut(k),
-                                    hillaire::kFieldParts * shared::kMultipleScatteringLutWidth,
-                                    shared::kMultipleScatteringLutHeight + 1)))
+                                    hillaire::kFieldParts * hillaire::scattering_order_width(k),
+                                    hillaire::scattering_order_height(k) + 1)))
             << "order " << k;
       }
       EXPECT_TRUE(all_finite(

@@ -46,26 +46,34 @@ Real mie_column_lookup(IN(Atmosphere) atmosphere, Real r, Real mu) {
 #endif
 
 // A part of a table whose kFieldParts parts stand side by side along u,
-// at (u, v) within the part; `rows` of which the part's
-// kMultipleScatteringLutHeight are the first.
-vec3 sample_part(sampler2D table, float u, float v, int part, int rows) {
-  float n = float(kMultipleScatteringLutHeight);
-  return texture(table, vec2((float(part) + u) / float(kFieldParts), v * n / float(rows))).rgb;
+// at (u, v) within the part; `rows` of which the part's `height` are the
+// first.
+vec3 sample_part(sampler2D table, float u, float v, int part, int height, int rows) {
+  vec2 uv = vec2((float(part) + u) / float(kFieldParts), v * float(height) / float(rows));
+  return texture(table, uv).rgb;
 }
 
 #ifdef SCATTERING_ORDERS_PASS
-// The previous order, which the scattering-orders pass scatters once more:
-// its parts over n rows, and the ground's irradiance in row n.
+// The order this pass gathers (from 2), and the one before it, which it
+// scatters once more: its parts over h rows of its own grid, and the
+// ground's irradiance in row h. (u, v) are on the LUT's grid.
+uniform int u_order_number;
 layout(binding = 7) uniform sampler2D u_previous_order;
 
 Real3 scattering_order_lookup(Real u, Real v, int part) {
-  return sample_part(u_previous_order, u, v, part, kMultipleScatteringLutHeight + 1);
+  int previous = u_order_number - 1;
+  int w = scattering_order_width(previous), h = scattering_order_height(previous);
+  return sample_part(u_previous_order, regrid_texture_coord(u, kMultipleScatteringLutWidth, w),
+                     regrid_texture_coord(v, kMultipleScatteringLutHeight, h), part, h, h + 1);
 }
 
 Real3 ground_order_lookup(IN(Atmosphere) atmosphere, Real mu_s) {
-  float n = float(kMultipleScatteringLutHeight);
-  float u = ground_irradiance_lut_u_from_mu_s(mu_s);
-  return texture(u_previous_order, vec2(u / float(kFieldParts), (n + 0.5) / (n + 1.0))).rgb;
+  int previous = u_order_number - 1;
+  int w = scattering_order_width(previous), h = scattering_order_height(previous);
+  float u = regrid_texture_coord(ground_irradiance_lut_u_from_mu_s(mu_s),
+                                 kMultipleScatteringLutWidth, w);
+  return texture(u_previous_order, vec2(u / float(kFieldParts), (float(h) + 0.5) / float(h + 1)))
+      .rgb;
 }
 #else
 Real3 scattering_order_lookup(Real u, Real v, int part) { return vec3(0.0); }
@@ -80,7 +88,8 @@ Real3 multiple_scattering_lookup(Real u, Real v, int part) { return vec3(0.0); }
 layout(binding = 3) uniform sampler2D u_multiple_scattering_lut;
 
 Real3 multiple_scattering_lookup(Real u, Real v, int part) {
-  return sample_part(u_multiple_scattering_lut, u, v, part, kMultipleScatteringLutHeight);
+  return sample_part(u_multiple_scattering_lut, u, v, part, kMultipleScatteringLutHeight,
+                     kMultipleScatteringLutHeight);
 }
 #endif
 

@@ -138,9 +138,11 @@ HillaireTechnique::HillaireTechnique(Settings settings)
       block_(make_buffer(sizeof(AtmosphereBlock), nullptr)) {
   static_assert(hillaire::kScatteringOrders == int(std::tuple_size_v<decltype(order_luts_)>),
                 "one table per order of scattering");
-  const int w = shared::kMultipleScatteringLutWidth, h = shared::kMultipleScatteringLutHeight;
-  for (Texture& order : order_luts_) {
-    order = make_texture_2d(GL_RGBA32F, hillaire::kFieldParts * w, h + 1);
+  for (size_t k = 0; k < order_luts_.size(); ++k) {
+    const int order = int(k) + 1;
+    order_luts_[k] =
+        make_texture_2d(GL_RGBA32F, hillaire::kFieldParts * hillaire::scattering_order_width(order),
+                        hillaire::scattering_order_height(order) + 1);
   }
   // Zero until a frame fills them; with the paper's LUT the ground's sky
   // light and the moments stay zero.
@@ -195,13 +197,19 @@ void HillaireTechnique::prepare(GpuTimer& timer) {
     glDispatchCompute(groups(w), groups(h), 1);
     glMemoryBarrier(kLutBarrier);
   } else {
-    // Each order from the one before: h rows of its moments and one row
-    // of E_n.
+    // Each order from the one before, on its grid: h rows of its moments
+    // and one row of E_n.
     for (size_t k = 0; k < order_luts_.size(); ++k) {
-      (k == 0 ? first_order_program_ : next_order_program_).use();
-      if (k > 0) glBindTextureUnit(7, order_luts_[k - 1].id());
+      const int order = int(k) + 1;
+      Program& program = k == 0 ? first_order_program_ : next_order_program_;
+      program.use();
+      if (k > 0) {
+        glUniform1i(program.uniform("u_order_number"), order);
+        glBindTextureUnit(7, order_luts_[k - 1].id());
+      }
       bind_image(0, order_luts_[k].id(), GL_RGBA32F, false);
-      glDispatchCompute(groups(w), groups(h + 1), 1);
+      glDispatchCompute(groups(hillaire::scattering_order_width(order)),
+                        groups(hillaire::scattering_order_height(order) + 1), 1);
       glMemoryBarrier(kLutBarrier);
     }
     orders_sum_program_.use();

@@ -98,8 +98,10 @@ class HillaireTechnique final : public AtmosphereTechnique {
   // The multiple-scattering LUT is kFieldParts tables of w x h side by side
   // (the terms of FieldMoments; w = kMultipleScatteringLutWidth over mu_s,
   // h = kMultipleScatteringLutHeight over altitude). Order n = 1 ...
-  // kScatteringOrders of the last frame: the same parts over h rows, and
-  // E_n in the first w texels of row h; not filled with the paper's LUT.
+  // kScatteringOrders of the last frame: the same parts on the order's grid
+  // (w = hillaire::scattering_order_width(n), h = _height(n)) over h rows,
+  // and E_n in the first w texels of row h; not filled with the paper's
+  // LUT.
   GLuint scattering_order_lut(int n) const { return order_luts_[size_t(n - 1)].id(); }
   // The sky's irradiance on the ground per unit solar irradiance over the
   // sun's zenith cosine (one row, the multiple-scattering LUT's mu_s
