@@ -11,7 +11,10 @@ const int kTransmittanceLutHeight = 64;
 const int kMultipleScatteringLutWidth = 128;
 const int kMultipleScatteringLutHeight = 32;
 // The orders of scattering past kFineScatteringOrders
-// (hillaire_definitions.glsl) over the same (mu_s, r), on a coarser grid.
+// (hillaire_definitions.glsl) over the same (mu_s, r), on a coarser grid:
+// coarser along mu_s alone, since near the ground the light changes
+// within a few kilometres (with 8 rows the tenfold-dense Earth's blue sky
+// went from 4.9 to 45 % off).
 const int kCoarseOrderWidth = 32;
 const int kCoarseOrderHeight = 32;
 // The forward-gain LUT: nu (u) by Mie scattering optical depth (v).
