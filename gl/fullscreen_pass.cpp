@@ -23,4 +23,9 @@ void FullscreenPass::draw() const {
   glDrawArrays(GL_TRIANGLES, 0, 3);
 }
 
+void FullscreenPass::draw_indirect() const {
+  glBindVertexArray(empty_vao_.id());
+  glDrawArraysIndirect(GL_TRIANGLES, nullptr);
+}
+
 }  // namespace planet

@@ -16,6 +16,11 @@ class FullscreenPass {
   // uniforms and textures, then draw().
   void begin(GLuint framebuffer, int width, int height, const Program& program) const;
   void draw() const;
+  // Draws what the buffer bound to GL_DRAW_INDIRECT_BUFFER says (a
+  // DrawArraysIndirectCommand at its start) with no vertex attributes:
+  // for a vertex shader that places its own triangles, in place of the
+  // one over the viewport.
+  void draw_indirect() const;
 
  private:
   VertexArray empty_vao_;

@@ -8,10 +8,18 @@
 //  - the per-pixel path (high up and in space): a march of every pixel with
 //    the same multiple-scattering LUT.
 // Between the two altitudes both run and are blended, so that nothing pops.
+//
+// On the LUT path alone the pass is drawn in two parts: every pixel by
+// this shader compiled with NO_MARCH, then the whole shader over the 8 x 8
+// tiles with a surface past the froxels' blend (sky_march_tiles.comp,
+// sky_tiles.vert). llvmpipe runs both sides of a branch, and a loop's body
+// at least once, for every pixel of a block: on the ground a march behind
+// an `if` took most of the pass's time over sky that takes no step of it,
+// and a discarded pixel still runs the shader with its block. The pixel's
+// NDC comes from its window position, so that both parts see the same.
 #include "atmosphere/gpu/hillaire/hillaire_common.glsl"
 #include "atmosphere/gpu/sky_pixel.glsl"
 
-in vec2 v_ndc;
 layout(location = 0) out vec4 o_radiance;
 
 layout(binding = 0) uniform sampler2D u_depth;
@@ -117,7 +125,8 @@ void froxel(float t, out vec3 scattering, out vec3 transmittance) {
 
 void main() {
   Atmosphere atmosphere = block_atmosphere();
-  SkyPixel pixel = sky_pixel(atmosphere, u_depth, u_surface, v_ndc, u_ray_from_ndc, u_near, u_camera);
+  vec2 ndc = gl_FragCoord.xy / u_viewport * 2.0 - 1.0;
+  SkyPixel pixel = sky_pixel(atmosphere, u_depth, u_surface, ndc, u_ray_from_ndc, u_near, u_camera);
   float depth = pixel.depth;
   vec3 surface = pixel.surface;
   vec3 dir = pixel.dir;
@@ -145,10 +154,12 @@ void main() {
   // march on each side the sky pass took 130 ms on the ground (now 84) and
   // 774 ms at 400 km (now 737).
   vec3 march_luminance = vec3(0.0), march_transmittance = vec3(1.0);
+#ifndef NO_MARCH
   if (u_lut_weight < 1.0 || (depth > 0.0 && blend > 0.0)) {
     float t_max = depth > 0.0 ? t_surface : (hits_ground ? t_ground_near : kFar);
     march(camera, dir, t_max, depth == 0.0 && hits_ground, march_luminance, march_transmittance);
   }
+#endif
 
   vec3 lut_radiance = vec3(0.0);
   if (u_lut_weight > 0.0) {

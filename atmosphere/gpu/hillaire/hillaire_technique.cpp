@@ -64,6 +64,22 @@ std::vector<std::string> view_defines(const HillaireTechnique::Settings& setting
   return defines;
 }
 
+// The sky pass (hillaire_sky.frag) drawn by `vertex`, whole or without the
+// march.
+Program sky_program(const HillaireTechnique::Settings& settings, const char* vertex,
+                    const char* part) {
+  std::vector<std::string> defines =
+      view_defines(settings, fmt::format("PER_PIXEL_STEPS {}", settings.per_pixel_steps),
+                   {"TERRAIN_SHADOWS 1"});
+  if (part) defines.push_back(part);
+  return Program::graphics(vertex, "atmosphere/gpu/hillaire/hillaire_sky.frag", defines);
+}
+
+// Pixels a side of sky_march_tiles.comp's tiles, and the buffer binding of
+// its list.
+constexpr int kMarchTile = 8;
+constexpr GLuint kMarchTilesBinding = 4;
+
 // Texture unit of the froxels' shadow loss in the sky pass.
 constexpr GLuint kShadowLossUnit = 10;
 
@@ -111,11 +127,11 @@ HillaireTechnique::HillaireTechnique(Settings settings)
           "atmosphere/gpu/hillaire/aerial_perspective.comp",
           view_defines(settings, fmt::format("AERIAL_SUBSTEPS {}", settings.aerial_substeps),
                        {"TERRAIN_SHADOWS 1", "TERRAIN_SHADOW_LOSS 1"}))),
-      sky_program_(Program::graphics(
-          "gl/shaders/fullscreen.vert", "atmosphere/gpu/hillaire/hillaire_sky.frag",
-          view_defines(settings, fmt::format("PER_PIXEL_STEPS {}", settings.per_pixel_steps),
-                       {"TERRAIN_SHADOWS 1"}))),
+      sky_program_(sky_program(settings, "gl/shaders/fullscreen.vert", nullptr)),
       space_program_(Program::graphics("gl/shaders/fullscreen.vert", "atmosphere/gpu/space.frag")),
+      sky_unmarched_program_(sky_program(settings, "gl/shaders/fullscreen.vert", "NO_MARCH 1")),
+      sky_tiles_program_(sky_program(settings, "atmosphere/gpu/hillaire/sky_tiles.vert", nullptr)),
+      march_tiles_program_(Program::compute("atmosphere/gpu/hillaire/sky_march_tiles.comp")),
       transmittance_lut_(make_texture_2d(GL_RGBA32F, shared::kTransmittanceLutWidth,
                                          shared::kTransmittanceLutHeight)),
       multiple_scattering_lut_(
@@ -406,36 +422,74 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   if (shaded.z <= 0 || shaded.w <= 0) return;
 
   timer.begin("sky");
-  sky_pass_.begin(frame.target_framebuffer, w, h, sky_program_);
-  if (shaded_fraction_ < 1.0) {
-    glEnable(GL_SCISSOR_TEST);
-    glScissor(shaded.x, shaded.y, shaded.z, shaded.w);
+  // Binds the sky pass's inputs for `program` (hillaire_sky.frag).
+  auto begin_sky = [&](const Program& program) {
+    sky_pass_.begin(frame.target_framebuffer, w, h, program);
+    glBindTextureUnit(0, frame.depth_texture);
+    glBindTextureUnit(1, frame.surface_texture);
+    glBindTextureUnit(SkyFrame::kGroundBelowUnit, frame.ground_below_texture);
+    glBindTextureUnit(4, sky_view_lut_.id());
+    glBindTextureUnit(5, aerial_scattering_.id());
+    glBindTextureUnit(6, aerial_transmittance_.id());
+    glUniform3fv(program.uniform("u_camera"), 1, glm::value_ptr(glm::vec3(frame.camera_atmo)));
+    glUniform1f(program.uniform("u_camera_r"), lut_r);
+    glUniform1f(program.uniform("u_sky_view_r"), sky_view_r);
+    glUniformMatrix3fv(program.uniform("u_ray_from_ndc"), 1, GL_FALSE,
+                       glm::value_ptr(frame.atmo_ray_from_ndc));
+    glUniform3fv(program.uniform("u_sun_dir"), 1, glm::value_ptr(frame.sun_dir_atmo));
+    glUniform1f(program.uniform("u_near"), frame.near);
+    glUniform2f(program.uniform("u_viewport"), float(frame.width), float(frame.height));
+    glUniformMatrix3fv(program.uniform("u_local_from_atmo"), 1, GL_FALSE,
+                       glm::value_ptr(glm::mat3(local)));
+    glUniform1f(program.uniform("u_lut_weight"), float(lut_weight_));
+    glUniform1f(program.uniform("u_aerial_range"), float(aerial_range_));
+    if (settings_.terrain_shadows) {
+      bind_terrain_shadow(program, frame.terrain_shadow);
+      glBindTextureUnit(kShadowLossUnit, aerial_shadow_loss_.id());
+      glUniform1f(program.uniform("u_shadow_loss_weight"), sky_shadow ? 1.0f : 0.0f);
+    }
+  };
+  if (lut_weight_ < 1.0 || !frame.view_pruning) {
+    begin_sky(sky_program_);
+    if (shaded_fraction_ < 1.0) {
+      glEnable(GL_SCISSOR_TEST);
+      glScissor(shaded.x, shaded.y, shaded.z, shaded.w);
+    }
+    sky_pass_.draw();
+    glDisable(GL_SCISSOR_TEST);
+  } else {
+    // Every pixel without the march, then the march's tiles (see
+    // hillaire_sky.frag): an 8 x 8 tile with a surface past the froxels'
+    // blend, listed on the GPU and drawn as one quad each.
+    begin_sky(sky_unmarched_program_);
+    sky_pass_.draw();
+    const int tiles_x = (w + kMarchTile - 1) / kMarchTile;
+    const int tiles_y = (h + kMarchTile - 1) / kMarchTile;
+    const size_t tiles = size_t(tiles_x) * size_t(tiles_y);
+    const size_t bytes = (4 + 2 * tiles) * sizeof(GLuint);
+    if (bytes > march_tiles_bytes_) {
+      march_tiles_ = make_buffer(bytes, nullptr);
+      march_tiles_bytes_ = bytes;
+    }
+    const GLuint command[4] = {6, 0, 0, 0};  // six vertices a tile, no tiles yet
+    glNamedBufferSubData(march_tiles_.id(), 0, sizeof(command), command);
+    march_tiles_program_.use();
+    glBindTextureUnit(0, frame.depth_texture);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMarchTilesBinding, march_tiles_.id());
+    glUniformMatrix3fv(march_tiles_program_.uniform("u_ray_from_ndc"), 1, GL_FALSE,
+                       glm::value_ptr(frame.atmo_ray_from_ndc));
+    glUniform1f(march_tiles_program_.uniform("u_near"), frame.near);
+    glUniform2f(march_tiles_program_.uniform("u_viewport"), float(w), float(h));
+    // Where hillaire_sky.frag's blend from the froxels to the march begins.
+    glUniform1f(march_tiles_program_.uniform("u_blend_start"), float(0.8 * aerial_range_));
+    glDispatchCompute(GLuint(tiles_x), GLuint(tiles_y), 1);
+    glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+    begin_sky(sky_tiles_program_);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMarchTilesBinding, march_tiles_.id());
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, march_tiles_.id());
+    sky_pass_.draw_indirect();
+    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
   }
-  glBindTextureUnit(0, frame.depth_texture);
-  glBindTextureUnit(1, frame.surface_texture);
-  glBindTextureUnit(SkyFrame::kGroundBelowUnit, frame.ground_below_texture);
-  glBindTextureUnit(4, sky_view_lut_.id());
-  glBindTextureUnit(5, aerial_scattering_.id());
-  glBindTextureUnit(6, aerial_transmittance_.id());
-  glUniform3fv(sky_program_.uniform("u_camera"), 1, glm::value_ptr(glm::vec3(frame.camera_atmo)));
-  glUniform1f(sky_program_.uniform("u_camera_r"), lut_r);
-  glUniform1f(sky_program_.uniform("u_sky_view_r"), sky_view_r);
-  glUniformMatrix3fv(sky_program_.uniform("u_ray_from_ndc"), 1, GL_FALSE,
-                     glm::value_ptr(frame.atmo_ray_from_ndc));
-  glUniform3fv(sky_program_.uniform("u_sun_dir"), 1, glm::value_ptr(frame.sun_dir_atmo));
-  glUniform1f(sky_program_.uniform("u_near"), frame.near);
-  glUniform2f(sky_program_.uniform("u_viewport"), float(frame.width), float(frame.height));
-  glUniformMatrix3fv(sky_program_.uniform("u_local_from_atmo"), 1, GL_FALSE,
-                     glm::value_ptr(glm::mat3(local)));
-  glUniform1f(sky_program_.uniform("u_lut_weight"), float(lut_weight_));
-  glUniform1f(sky_program_.uniform("u_aerial_range"), float(aerial_range_));
-  if (settings_.terrain_shadows) {
-    bind_terrain_shadow(sky_program_, frame.terrain_shadow);
-    glBindTextureUnit(kShadowLossUnit, aerial_shadow_loss_.id());
-    glUniform1f(sky_program_.uniform("u_shadow_loss_weight"), sky_shadow ? 1.0f : 0.0f);
-  }
-  sky_pass_.draw();
-  glDisable(GL_SCISSOR_TEST);
   timer.end();
 }
 

@@ -120,6 +120,12 @@ class HillaireTechnique final : public AtmosphereTechnique {
   Program transmittance_program_, multiple_scattering_program_, first_order_program_,
       next_order_program_, orders_sum_program_, forward_gain_program_, sky_view_program_,
       aerial_program_, sky_program_, space_program_;
+  // The sky pass in two parts for frames on the LUT path alone
+  // (hillaire_sky.frag): every pixel without the march, then the whole
+  // shader over the tiles that sky_march_tiles.comp lists.
+  Program sky_unmarched_program_, sky_tiles_program_, march_tiles_program_;
+  Buffer march_tiles_;  // the indirect draw's command, then the tiles
+  size_t march_tiles_bytes_ = 0;
   Texture transmittance_lut_, multiple_scattering_lut_, ground_irradiance_lut_, forward_gain_lut_,
       sky_view_lut_, aerial_scattering_, aerial_transmittance_, aerial_shadow_loss_;
   std::array<Texture, 6> order_luts_;  // kScatteringOrders
