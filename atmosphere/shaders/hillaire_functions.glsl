@@ -151,11 +151,17 @@ Real mie_column_to_top(IN(Atmosphere) atmosphere, Real r, Real mu, int steps) {
 // The gain in Mie scattering per channel for sunlight that crossed Mie
 // scattering optical depth tau, seen at cosine nu to the sun; held where
 // exp(tau) would overflow float, where the sun's light is long gone.
+// GREY_MIE, where the model's Mie scattering is the same in every channel
+// (so is tau), reads the table once for all three.
 Real3 forward_gain(IN(Atmosphere) atmosphere, Real nu, IN(Real3) tau) {
   Real3 t = min(tau, Real3(80.0));
+#ifdef GREY_MIE
+  return exp(t) * forward_gain_lookup(atmosphere, nu, t.x);
+#else
   return exp(t) * Real3(forward_gain_lookup(atmosphere, nu, t.x),
                         forward_gain_lookup(atmosphere, nu, t.y),
                         forward_gain_lookup(atmosphere, nu, t.z));
+#endif
 }
 
 // The field's parts at (u, v) of its table (multiple_scattering_lut_uv_from_r_mu_s),

@@ -17,6 +17,11 @@
 // an `if` took most of the pass's time over sky that takes no step of it,
 // and a discarded pixel still runs the shader with its block. The pixel's
 // NDC comes from its window position, so that both parts see the same.
+//
+// For frames on the per-pixel path alone (u_lut_weight 0), the shader is
+// compiled with NO_LUT, without the LUT path, which llvmpipe would run
+// over every pixel for a weight of 0; where the model's Mie scattering is
+// grey, also with GREY_MIE (forward_gain).
 #include "atmosphere/gpu/hillaire/hillaire_common.glsl"
 #include "atmosphere/gpu/sky_pixel.glsl"
 
@@ -162,6 +167,7 @@ void main() {
 #endif
 
   vec3 lut_radiance = vec3(0.0);
+#ifndef NO_LUT
   if (u_lut_weight > 0.0) {
     if (depth > 0.0) {
       vec3 near_radiance = vec3(0.0);
@@ -192,6 +198,7 @@ void main() {
       }
     }
   }
+#endif
 
   vec3 march_radiance = march_luminance + march_transmittance * surface;
   if (open_sky) march_radiance += sun_disk(dir, march_transmittance);

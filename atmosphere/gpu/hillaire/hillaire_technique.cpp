@@ -75,6 +75,20 @@ Program sky_program(const HillaireTechnique::Settings& settings, const char* ver
   return Program::graphics(vertex, "atmosphere/gpu/hillaire/hillaire_sky.frag", defines);
 }
 
+// The sky pass without the LUT path, for a frame on the per-pixel path
+// alone (NO_LUT), grey Mie or not (GREY_MIE). It keeps the terrain's
+// shadow, though none reaches that high: compiled without it, the march's
+// sums came out different in their last bit.
+Program space_sky_program(const HillaireTechnique::Settings& settings, bool grey_mie) {
+  std::vector<std::string> defines =
+      view_defines(settings, fmt::format("PER_PIXEL_STEPS {}", settings.per_pixel_steps),
+                   {"TERRAIN_SHADOWS 1"});
+  defines.push_back("NO_LUT 1");
+  if (grey_mie) defines.push_back("GREY_MIE 1");
+  return Program::graphics("gl/shaders/fullscreen.vert",
+                           "atmosphere/gpu/hillaire/hillaire_sky.frag", defines);
+}
+
 // Pixels a side of sky_march_tiles.comp's tiles, and the buffer binding of
 // its list.
 constexpr int kMarchTile = 8;
@@ -183,6 +197,8 @@ void HillaireTechnique::update(const AtmosphereModel& model) {
   AtmosphereBlock block = make_atmosphere_block(model);
   glNamedBufferSubData(block_.id(), 0, sizeof(block), &block);
   model_key_ = PassKey().add(block);
+  grey_mie_ = block.mie_scattering.x == block.mie_scattering.y &&
+              block.mie_scattering.y == block.mie_scattering.z;
 }
 
 void HillaireTechnique::prepare(GpuTimer& timer) {
@@ -450,7 +466,16 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
     }
   };
   if (lut_weight_ < 1.0 || !frame.view_pruning) {
-    begin_sky(sky_program_);
+    // With pruning, a frame on the per-pixel path alone takes the shader
+    // without the LUT path (hillaire_sky.frag), and for grey Mie with a
+    // single read of the glow's gain; it writes the same bits.
+    if (frame.view_pruning && lut_weight_ == 0.0) {
+      std::optional<Program>& space = sky_space_programs_[grey_mie_ ? 1 : 0];
+      if (!space) space = space_sky_program(settings_, grey_mie_);
+      begin_sky(*space);
+    } else {
+      begin_sky(sky_program_);
+    }
     if (shaded_fraction_ < 1.0) {
       glEnable(GL_SCISSOR_TEST);
       glScissor(shaded.x, shaded.y, shaded.z, shaded.w);
