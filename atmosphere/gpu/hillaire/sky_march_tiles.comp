@@ -12,14 +12,7 @@ uniform float u_near;
 uniform vec2 u_viewport;
 uniform float u_blend_start;  // metres along the ray
 
-// DrawArraysIndirectCommand, then the tiles (x, y in tiles).
-layout(std430, binding = 4) buffer Tiles {
-  uint vertex_count;
-  uint instance_count;
-  uint first_vertex;
-  uint base_instance;
-  uvec2 tiles[];
-};
+#include "atmosphere/gpu/hillaire/sky_march_tiles.glsl"
 
 shared uint any_marched;
 

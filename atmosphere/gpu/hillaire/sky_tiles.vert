@@ -1,12 +1,7 @@
 // One quad per tile of sky_march_tiles.comp's list (instance i: tile i),
 // in pixels of u_viewport, clamped to it.
-layout(std430, binding = 4) readonly buffer Tiles {
-  uint vertex_count;
-  uint instance_count;
-  uint first_vertex;
-  uint base_instance;
-  uvec2 tiles[];
-};
+#define TILES_ACCESS readonly
+#include "atmosphere/gpu/hillaire/sky_march_tiles.glsl"
 uniform vec2 u_viewport;
 
 void main() {
