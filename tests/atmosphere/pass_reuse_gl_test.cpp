@@ -262,6 +262,15 @@ TEST_F(PassReuseGLTest, PruningByViewChangesNoPixelOnTheCanonicalScenesOrAClimbT
     pruned_frames += int(ran(stats).count("space"));
   }
   EXPECT_GE(pruned_frames, 2) << "the bound left pixels out from 4e7 and 1e8 m at least";
+  // Mars's dust scatters each channel its own way: from 400 km, on the
+  // per-pixel path alone, the shader without the LUT path for coloured Mie
+  // (Earth's is grey).
+  Body mars = load_body(data_dir() / "planets" / "mars.json");
+  auto above_mars = view_from_place(mars.shape, {glm::radians(-4.5), glm::radians(137.4), 400e3},
+                                    60.0, -60.0, 60.0, 25.0, 100.0);
+  FrameStats stats = compare(mars, load_atmosphere(mars), 96, 54, above_mars.camera,
+                             above_mars.sun_dir_body, "Mars from 400 km");
+  EXPECT_FALSE(ran(stats).count("sky_view_lut")) << "the per-pixel path alone";
 }
 
 }  // namespace PLANET_TEST_ID
