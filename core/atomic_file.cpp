@@ -80,7 +80,9 @@ StagingFolder::StagingFolder(const std::filesystem::path& dir)
   }
 }
 
-StagingFolder::~StagingFolder() {
+StagingFolder::~StagingFolder() { remove(); }
+
+void StagingFolder::remove() const {
   std::error_code ec;
   std::filesystem::remove_all(path_, ec);
 }

@@ -36,6 +36,10 @@ class StagingFolder {
   // A message about a file in here (a failed write) as one about the file
   // it stands for in `dir`: the user knows no staging folder.
   std::string as_published(const std::string& message) const;
+  // Removes the folder and what is left in it now, as destruction would: a
+  // job calls it once its last result is published, so that a kill in
+  // what it does after (its summary, tearing down GL) leaves no staging.
+  void remove() const;
 
  private:
   std::filesystem::path dir_, path_;
