@@ -64,29 +64,15 @@ std::vector<std::string> view_defines(const HillaireTechnique::Settings& setting
   return defines;
 }
 
-// The sky pass (hillaire_sky.frag) drawn by `vertex`, whole or without the
-// march.
+// The sky pass (hillaire_sky.frag) drawn by `vertex`, whole or in the
+// variant that `parts` define (NO_MARCH, NO_LUT, GREY_MIE).
 Program sky_program(const HillaireTechnique::Settings& settings, const char* vertex,
-                    const char* part) {
+                    const std::vector<std::string>& parts = {}) {
   std::vector<std::string> defines =
       view_defines(settings, fmt::format("PER_PIXEL_STEPS {}", settings.per_pixel_steps),
                    {"TERRAIN_SHADOWS 1"});
-  if (part) defines.push_back(part);
+  defines.insert(defines.end(), parts.begin(), parts.end());
   return Program::graphics(vertex, "atmosphere/gpu/hillaire/hillaire_sky.frag", defines);
-}
-
-// The sky pass without the LUT path, for a frame on the per-pixel path
-// alone (NO_LUT), grey Mie or not (GREY_MIE). It keeps the terrain's
-// shadow, though none reaches that high: compiled without it, the march's
-// sums came out different in their last bit.
-Program space_sky_program(const HillaireTechnique::Settings& settings, bool grey_mie) {
-  std::vector<std::string> defines =
-      view_defines(settings, fmt::format("PER_PIXEL_STEPS {}", settings.per_pixel_steps),
-                   {"TERRAIN_SHADOWS 1"});
-  defines.push_back("NO_LUT 1");
-  if (grey_mie) defines.push_back("GREY_MIE 1");
-  return Program::graphics("gl/shaders/fullscreen.vert",
-                           "atmosphere/gpu/hillaire/hillaire_sky.frag", defines);
 }
 
 // Pixels a side of sky_march_tiles.comp's tiles, and the buffer binding of
@@ -141,10 +127,10 @@ HillaireTechnique::HillaireTechnique(Settings settings)
           "atmosphere/gpu/hillaire/aerial_perspective.comp",
           view_defines(settings, fmt::format("AERIAL_SUBSTEPS {}", settings.aerial_substeps),
                        {"TERRAIN_SHADOWS 1", "TERRAIN_SHADOW_LOSS 1"}))),
-      sky_program_(sky_program(settings, "gl/shaders/fullscreen.vert", nullptr)),
+      sky_program_(sky_program(settings, "gl/shaders/fullscreen.vert")),
       space_program_(Program::graphics("gl/shaders/fullscreen.vert", "atmosphere/gpu/space.frag")),
-      sky_unmarched_program_(sky_program(settings, "gl/shaders/fullscreen.vert", "NO_MARCH 1")),
-      sky_tiles_program_(sky_program(settings, "atmosphere/gpu/hillaire/sky_tiles.vert", nullptr)),
+      sky_unmarched_program_(sky_program(settings, "gl/shaders/fullscreen.vert", {"NO_MARCH 1"})),
+      sky_tiles_program_(sky_program(settings, "atmosphere/gpu/hillaire/sky_tiles.vert")),
       march_tiles_program_(Program::compute("atmosphere/gpu/hillaire/sky_march_tiles.comp")),
       transmittance_lut_(make_texture_2d(GL_RGBA32F, shared::kTransmittanceLutWidth,
                                          shared::kTransmittanceLutHeight)),
@@ -471,7 +457,14 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
     // single read of the glow's gain; it writes the same bits.
     if (frame.view_pruning && lut_weight_ == 0.0) {
       std::optional<Program>& space = sky_space_programs_[grey_mie_ ? 1 : 0];
-      if (!space) space = space_sky_program(settings_, grey_mie_);
+      // It keeps the terrain's shadow, though none reaches that high:
+      // compiled without it, the march's sums came out different in their
+      // last bit.
+      if (!space) {
+        std::vector<std::string> parts = {"NO_LUT 1"};
+        if (grey_mie_) parts.push_back("GREY_MIE 1");
+        space = sky_program(settings_, "gl/shaders/fullscreen.vert", parts);
+      }
       begin_sky(*space);
     } else {
       begin_sky(sky_program_);
