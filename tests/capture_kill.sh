@@ -88,7 +88,11 @@ for i in $(seq 1 "$kills"); do
   leftovers=$(find "$cut" -name '.partial-*' -o -name '.staging-*' | wc -l)
   [ "$leftovers" -eq 0 ] || { echo "FAIL: kill $i: the resumed folder keeps $leftovers partial files"; exit 1; }
   same_folder "$work/whole" "$cut" || { echo "FAIL: kill $i after $delay_ms ms, resumed from frame $complete"; exit 1; }
-  echo "kill $i $delay_ms ms after the first frame: $complete whole frames, resumed with --frames $complete: to the same folder"
+  if [ "$complete" -lt "$frames" ]; then
+    echo "kill $i $delay_ms ms after the first frame: $complete whole frames, resumed with --frames $complete: to the same folder"
+  else
+    echo "kill $i $delay_ms ms after the first frame: all $frames frames whole, no resume needed, the same folder"
+  fi
   rm -rf "$cut"
 done
 echo "$kills kills: each left whole frames only and resumed to the uninterrupted run's folder" \
