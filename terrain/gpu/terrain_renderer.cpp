@@ -181,6 +181,12 @@ TerrainStats TerrainRenderer::draw(const Camera& camera, int width, int height,
   const GLint axis_i_loc = program_.uniform("u_axis_i");
   const GLint axis_j_loc = program_.uniform("u_axis_j");
   const auto index_count = GLsizei(tile_indices().size());
+  // Nearest first: the depth test then turns away the fragments of farther
+  // ground behind a ridge before they are shaded.
+  std::stable_sort(sel.tiles.begin(), sel.tiles.end(),
+                   [](const SelectedTile& a, const SelectedTile& b) {
+                     return a.distance < b.distance;
+                   });
   for (const SelectedTile& t : sel.tiles) {
     auto it = gpu_tiles_.find(t.key);
     if (it == gpu_tiles_.end()) {
