@@ -1,5 +1,5 @@
-// The governor in a capture: the shipped governed ascent switches
-// technique on its way to 40 000 km, says what it chose and why in every
+// The governor in a capture: the shipped governed ascent (at 10 frames a
+// second) switches technique on its way to 40 000 km, says what it chose and why in every
 // sidecar, stays within its budget by its own table, fades each switch so
 // that it does not pop (the measure of the Hillaire issue: a frame's second
 // difference with the switch within 10 % of the worse technique's alone),
@@ -112,10 +112,18 @@ TEST_F(GovernorGLTest, TheGovernedAscentSaysWhatItChoseAndWhyInEveryFrame) {
     EXPECT_LE(g.at("predicted").at("error_percent").get<double>(), *script_.error_budget_percent);
     EXPECT_FALSE(g.at("why").get<std::string>().empty());
     EXPECT_TRUE(g.contains("most_accurate")) << g.dump();
+    // What it drew is the cheapest within the budget, or the choice before
+    // it kept (hysteresis), saying which was cheaper.
+    ASSERT_TRUE(g.contains("cheapest_within_budget")) << g.dump();
+    const std::string cheapest = g.at("cheapest_within_budget").at("choice");
+    if (g.at("choice") != cheapest) {
+      ASSERT_GT(i, 0);
+      EXPECT_EQ(g.at("choice"), choices[size_t(i - 1)]) << "frame " << i << ": " << g.dump();
+      EXPECT_NE(g.at("why").get<std::string>().find(cheapest), std::string::npos) << g.dump();
+    }
   }
-  int switches = 0;
-  for (int i = 1; i < frames; ++i) switches += choices[size_t(i)] != choices[size_t(i - 1)];
-  EXPECT_GE(switches, 2) << "the ascent must switch in the air and again in space";
+  // At a frame a second (61 frames) no choice may pay for Bruneton's tables
+  // (half a minute to compute); the 10 frames a second below switch.
 }
 
 // The same ascent at 10 frames a second, around each switch: the switch
