@@ -1,6 +1,7 @@
-// The governor in a capture: the shipped governed ascent (at 10 frames a
-// second) switches technique on its way to 40 000 km, says what it chose and why in every
-// sidecar, stays within its budget by its own table, fades each switch so
+// The governor in a capture: the shipped governed ascent says what it
+// chose and why in every sidecar, draws the cheapest choice within its
+// budget by its own table or keeps the last for its dwell; at 10 frames a
+// second it switches technique on its way to 40 000 km, fades each switch so
 // that it does not pop (the measure of the Hillaire issue: a frame's second
 // difference with the switch within 10 % of the worse technique's alone),
 // and a slice that starts within a fade is byte-identical to the whole run.
