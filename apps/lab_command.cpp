@@ -3,6 +3,8 @@
 // them by scripts/lab_report.py.
 #include "apps/commands.h"
 #include "apps/reference_progress.h"
+#include "atmosphere/gpu/bruneton/bruneton_cache.h"
+#include "core/cache_dir.h"
 #include "core/atomic_file.h"
 #include "core/data_paths.h"
 #include "core/error.h"
@@ -20,7 +22,9 @@
 #include <epoxy/gl.h>
 #include <fmt/format.h>
 
+#include <cmath>
 #include <cstdio>
+#include <filesystem>
 #include <map>
 #include <tuple>
 #include <cstdlib>
@@ -56,6 +60,39 @@ void ensure_references(const SweepPlan& plan, const LabArgs& args) {
   }
 }
 
+// The bruneton cache keeps every table the sweep reads again where the
+// environment sets no limit and the disk has room; else this says what the
+// cells will pay. Kept too small, the cache pushes out each scene's tables
+// before a later run reads them: every one is computed again.
+void keep_sweep_tables(const SweepPlan& plan) {
+  const uintmax_t need = sweep_disk_table_bytes(plan);
+  const uintmax_t limit = bruneton_cache_limit_bytes();
+  if (limit == 0 || need <= limit) return;
+  const std::filesystem::path dir = cache_dir("bruneton");
+  std::error_code ec;
+  std::filesystem::create_directories(dir, ec);
+  std::filesystem::space_info space = std::filesystem::space(dir, ec);
+  const bool room = !ec && space.available + bruneton_cache_bytes() >= need;
+  auto gb = [](uintmax_t bytes) { return double(bytes) / (1024.0 * 1024.0 * 1024.0); };
+  if (room && !bruneton_cache_limit_from_environment()) {
+    set_bruneton_cache_floor(need);
+    std::printf("lab: its bruneton tables take %.1f GB, over the cache's default %.1f GB: this "
+                "run keeps up to %.1f GB in %s\n",
+                gb(need), gb(limit), gb(need), dir.string().c_str());
+    return;
+  }
+  std::fflush(stdout);
+  std::fprintf(stderr,
+               "lab: its bruneton tables take %.1f GB, over the %.1f GB that %s: a table pushed "
+               "out is computed again before its cell (seconds to minutes each)%s\n",
+               gb(need), gb(limit),
+               room ? "PLANET_BRUNETON_CACHE_MB keeps" : "the cache's disk has room for",
+               room ? fmt::format("; set PLANET_BRUNETON_CACHE_MB={:.0f} or more to keep them",
+                                  std::ceil(double(need) / (1024.0 * 1024.0)))
+                          .c_str()
+                    : "");
+}
+
 void run_lab(LabArgs& args) {
   set_progress_shown(!args.quiet);
   SweepOptions& o = args.options;
@@ -82,6 +119,7 @@ void run_lab(LabArgs& args) {
   const int total = int(plan.scenes.size() * plan.points.size());
   std::printf("lab: %zu scenes x %zu (technique, quality) points = %d cells into %s\n",
               plan.scenes.size(), plan.points.size(), total, o.out.string().c_str());
+  keep_sweep_tables(plan);
   std::fflush(stdout);
   Progress progress("lab run", total, "cell", args.quiet);
   std::vector<SweepCell> cells = run_sweep(o, plan, [&](int done, int, const std::string&) {

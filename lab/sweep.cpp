@@ -1,9 +1,11 @@
 #include "lab/sweep.h"
 
+#include "atmosphere/gpu/atmosphere_block.h"
 #include "atmosphere/gpu/registry.h"
 #include "core/atomic_file.h"
 #include "core/data_paths.h"
 #include "core/error.h"
+#include "core/hash.h"
 #include "core/tone_map.h"
 #include "core/version.h"
 #include "gl/texture.h"
@@ -178,6 +180,23 @@ double geometric_mean(const std::vector<double>& v) {
 }
 
 }  // namespace
+
+uintmax_t sweep_disk_table_bytes(const SweepPlan& plan) {
+  std::set<uint64_t> models;
+  for (const Scene& scene : plan.scenes) {
+    AtmosphereBlock block = make_atmosphere_block(scene_atmosphere(scene, scene_body(scene)));
+    Fnv1a h;
+    h.bytes(&block, sizeof block);
+    models.insert(h.value());
+  }
+  uintmax_t per_model = 0;
+  for (const auto& [technique, quality] : plan.points) {
+    std::string choice = choice_of(technique, quality);
+    per_model += disk_table_bytes(parse_technique(choice)) +
+                 disk_table_bytes(parse_technique(single_scattering_text(choice)));
+  }
+  return per_model * models.size();
+}
 
 PathBudget sweep_reference_budget(const SweepOptions& o, const Scene& scene) {
   if (o.paths) return *o.paths;

@@ -10,6 +10,7 @@
 #include "lab/scene.h"
 
 #include <array>
+#include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -61,6 +62,11 @@ struct SweepPlan {
 
 // Checks every name and the output folder (InputError) before any work.
 SweepPlan plan_sweep(const SweepOptions& options);
+
+// The bytes of disk-cached tables the sweep makes and reads again (each
+// point's and its first order's, per distinct model of its scenes): what
+// the bruneton cache must keep for no cell to wait on a table pushed out.
+uintmax_t sweep_disk_table_bytes(const SweepPlan& plan);
 
 // The budget of the scene's ground truth in the sweep: options.paths if
 // given, else the best cached or shipped, else the lab's paths

@@ -72,7 +72,7 @@ const std::vector<std::pair<std::string, std::string>> kHillaireQualityPoints = 
     {"fine", "sky_view_steps=64,per_pixel_steps=96,aerial_substeps=4"},
 };
 
-std::unique_ptr<AtmosphereTechnique> make_bruneton(const TechniqueChoice& c) {
+BrunetonTechnique::Settings bruneton_settings(const TechniqueChoice& c) {
   BrunetonTechnique::Settings s;
   s.r = c.integer("r_size");
   s.mu = c.integer("mu_size");
@@ -89,7 +89,11 @@ std::unique_ptr<AtmosphereTechnique> make_bruneton(const TechniqueChoice& c) {
   s.sphere_samples = c.integer("sphere_samples");
   s.transmittance_steps = c.integer("transmittance_steps");
   s.tail = c.integer("tail") == 1;
-  return std::make_unique<BrunetonTechnique>(s);
+  return s;
+}
+
+std::unique_ptr<AtmosphereTechnique> make_bruneton(const TechniqueChoice& c) {
+  return std::make_unique<BrunetonTechnique>(bruneton_settings(c));
 }
 
 std::unique_ptr<AtmosphereTechnique> make_oneil(const TechniqueChoice& c) {
@@ -322,6 +326,11 @@ std::unique_ptr<AtmosphereTechnique> make_technique(const TechniqueChoice& choic
 
 std::unique_ptr<AtmosphereTechnique> make_technique(const std::string& text) {
   return make_technique(parse_technique(text));
+}
+
+uintmax_t disk_table_bytes(const TechniqueChoice& choice) {
+  if (choice.name != "bruneton") return 0;
+  return BrunetonTechnique::table_file_bytes(bruneton_settings(choice));
 }
 
 std::string describe_techniques() {

@@ -6,6 +6,7 @@
 // through it, as `name` or `name:key=value,...` (hillaire:per_pixel_steps=20).
 #include "atmosphere/gpu/technique.h"
 
+#include <cstdint>
 #include <functional>
 #include <memory>
 #include <string>
@@ -68,6 +69,10 @@ std::string single_scattering_text(const std::string& text);
 // Needs a current GL context.
 std::unique_ptr<AtmosphereTechnique> make_technique(const TechniqueChoice& choice);
 std::unique_ptr<AtmosphereTechnique> make_technique(const std::string& text);
+
+// The bytes one model's tables of this choice take in the disk cache (0 for
+// a technique that keeps nothing there); no GL needed.
+uintmax_t disk_table_bytes(const TechniqueChoice& choice);
 
 // The table as a person reads it: `planet techniques`.
 std::string describe_techniques();

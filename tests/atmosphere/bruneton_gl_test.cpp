@@ -1,6 +1,6 @@
 // The bruneton technique: one order is single scattering (against a fine
 // brute-force march), a corrupt table file on disk is reported and rebuilt,
-// and the precompute reports its time per order.
+// and the precompute reports its time per order; the cache's limit.
 #include "atmosphere/gpu/bruneton/bruneton_cache.h"
 #include "atmosphere/gpu/bruneton/bruneton_technique.h"
 #include "atmosphere/gpu/registry.h"
@@ -13,9 +13,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <string>
 #include <vector>
 
 #include "tests/unity_id.h"
@@ -95,6 +97,10 @@ TEST_F(BrunetonGLTest, CorruptCacheIsReportedAndRebuilt) {
     first.update(model);
     EXPECT_FALSE(first.from_cache());
     ASSERT_TRUE(std::filesystem::exists(file));
+    // What the lab counts its tables' disk by: the file less its header.
+    uintmax_t bytes = std::filesystem::file_size(file);
+    EXPECT_GE(bytes, BrunetonTechnique::table_file_bytes(settings));
+    EXPECT_LE(bytes, BrunetonTechnique::table_file_bytes(settings) + 256);
     EXPECT_EQ(first.precompute_seconds().size(), size_t(settings.orders)) << "one time per order";
     built = scattering_texels(first);
   }
@@ -132,6 +138,27 @@ TEST_F(BrunetonGLTest, CorruptCacheIsReportedAndRebuilt) {
   BrunetonTechnique fourth(settings);
   fourth.update(model);
   EXPECT_TRUE(fourth.from_cache());
+}
+
+// The lab's floor lifts the default limit, never one the environment set.
+TEST(BrunetonCacheLimit, AFloorLiftsTheDefaultButNotTheEnvironments) {
+  const char* was = std::getenv("PLANET_BRUNETON_CACHE_MB");
+  std::string saved = was ? was : "";
+  const uintmax_t mb = 1024 * 1024;
+  unsetenv("PLANET_BRUNETON_CACHE_MB");
+  EXPECT_EQ(bruneton_cache_limit_bytes(), 4096 * mb);
+  set_bruneton_cache_floor(5000 * mb);
+  EXPECT_EQ(bruneton_cache_limit_bytes(), 5000 * mb);
+  EXPECT_FALSE(bruneton_cache_limit_from_environment());
+  setenv("PLANET_BRUNETON_CACHE_MB", "100", 1);
+  EXPECT_EQ(bruneton_cache_limit_bytes(), 100 * mb);
+  EXPECT_TRUE(bruneton_cache_limit_from_environment());
+  set_bruneton_cache_floor(0);
+  if (was) {
+    setenv("PLANET_BRUNETON_CACHE_MB", saved.c_str(), 1);
+  } else {
+    unsetenv("PLANET_BRUNETON_CACHE_MB");
+  }
 }
 
 }  // namespace PLANET_TEST_ID

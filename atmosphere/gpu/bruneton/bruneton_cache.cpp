@@ -7,10 +7,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <optional>
 #include <sstream>
 
 namespace planet {
@@ -46,16 +48,45 @@ void write_bruneton_cache(const std::string& key, const std::vector<CachedTable>
   if (uintmax_t limit = bruneton_cache_limit_bytes()) prune_bruneton_cache(limit, file);
 }
 
-uintmax_t bruneton_cache_limit_bytes() {
+namespace {
+
+std::atomic<uintmax_t> cache_floor{0};
+
+// $PLANET_BRUNETON_CACHE_MB in bytes, when it is set and a size.
+std::optional<uintmax_t> limit_from_environment(bool say_why_not) {
   const char* env = std::getenv("PLANET_BRUNETON_CACHE_MB");
-  if (env && *env) {
-    char* end = nullptr;
-    double mb = std::strtod(env, &end);
-    if (end != env && *end == '\0' && mb >= 0) return uintmax_t(mb * 1024.0 * 1024.0);
-    std::fprintf(stderr, "planet: PLANET_BRUNETON_CACHE_MB='%s' is not a size in MB; 4096 is used\n",
-                 env);
+  if (!env || !*env) return std::nullopt;
+  char* end = nullptr;
+  double mb = std::strtod(env, &end);
+  if (end != env && *end == '\0' && mb >= 0) return uintmax_t(mb * 1024.0 * 1024.0);
+  if (say_why_not) {
+    std::fprintf(stderr,
+                 "planet: PLANET_BRUNETON_CACHE_MB='%s' is not a size in MB; 4096 is used\n", env);
   }
-  return uintmax_t(4096) * 1024 * 1024;
+  return std::nullopt;
+}
+
+}  // namespace
+
+uintmax_t bruneton_cache_limit_bytes() {
+  if (auto limit = limit_from_environment(true)) return *limit;
+  return std::max(uintmax_t(4096) * 1024 * 1024, cache_floor.load());
+}
+
+bool bruneton_cache_limit_from_environment() { return limit_from_environment(false).has_value(); }
+
+void set_bruneton_cache_floor(uintmax_t bytes) { cache_floor = bytes; }
+
+uintmax_t bruneton_cache_bytes() {
+  uintmax_t total = 0;
+  std::error_code ec;
+  for (auto it = std::filesystem::directory_iterator(cache_dir("bruneton"), ec);
+       !ec && it != std::filesystem::directory_iterator(); it.increment(ec)) {
+    std::error_code e;
+    uintmax_t bytes = it->path().extension() == ".tables" ? it->file_size(e) : 0;
+    if (!e) total += bytes;
+  }
+  return total;
 }
 
 int prune_bruneton_cache(uintmax_t limit, const std::filesystem::path& keep) {

@@ -30,8 +30,16 @@ std::optional<std::vector<CachedTable>> read_bruneton_cache(const std::string& k
 void write_bruneton_cache(const std::string& key, const std::vector<CachedTable>& tables);
 
 // The most the folder keeps: $PLANET_BRUNETON_CACHE_MB megabytes if set (0:
-// no limit), else 4096 MB, some thirty tables of the default quality.
+// no limit), else 4096 MB (some thirty tables of the default quality) or
+// the floor this process set, whichever is more.
 uintmax_t bruneton_cache_limit_bytes();
+bool bruneton_cache_limit_from_environment();
+// For the rest of this process, keeps at least `bytes` where the
+// environment sets no limit: a sweep that reads its tables again (the
+// lab's) needs them all kept, or each is pushed out before it is read.
+void set_bruneton_cache_floor(uintmax_t bytes);
+// The bytes of the tables in the folder now.
+uintmax_t bruneton_cache_bytes();
 // Removes the files read or written longest ago until the folder's tables
 // fit in `limit` bytes, the file `keep` aside; returns how many it removed.
 int prune_bruneton_cache(uintmax_t limit, const std::filesystem::path& keep);

@@ -58,6 +58,14 @@ double bruneton_mu_s_min(const AtmosphereModel& model) {
   return std::cos(0.5 * M_PI + std::min(1.2 * beta, 0.5 * M_PI));
 }
 
+uintmax_t BrunetonTechnique::table_file_bytes(const Settings& s) {
+  const uintmax_t texel = 4 * sizeof(float);
+  const uintmax_t scattering = uintmax_t(s.nu) * s.mu_s * s.mu * s.r;
+  return texel * (uintmax_t(s.transmittance_width) * s.transmittance_height +
+                  uintmax_t(s.irradiance_width) * s.irradiance_height +
+                  scattering * (s.combined ? 1 : 2));
+}
+
 BrunetonTechnique::BrunetonTechnique(Settings settings)
     : settings_(settings), block_(make_buffer(sizeof(AtmosphereBlock), nullptr)) {
   const Settings& s = settings_;

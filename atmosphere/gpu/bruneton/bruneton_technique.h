@@ -13,6 +13,7 @@
 #include "gl/texture.h"
 
 #include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,9 @@ class BrunetonTechnique final : public AtmosphereTechnique {
     bool tail = true;
   };
   explicit BrunetonTechnique(Settings settings);
+  // The bytes one model's tables of these settings take in the disk cache
+  // (as 32-bit floats whatever the GPU keeps), header and checksum aside.
+  static uintmax_t table_file_bytes(const Settings& s);
   BrunetonTechnique() : BrunetonTechnique(Settings{}) {}
 
   std::string name() const override { return "bruneton"; }
