@@ -63,6 +63,24 @@ GovernorCheck check_from_json(const nlohmann::json& j) {
   return c;
 }
 
+// The stability map's one-axis cells with a ground truth (not inside the
+// planet).
+std::vector<StabilityCell> held_out_cells() {
+  std::vector<StabilityCell> out;
+  for (const StabilityCell& cell : plan_stability(StabilityOptions{})) {
+    if (cell.point.altitude_m < 0) continue;  // inside the planet: no ground truth
+    bool one_axis = std::any_of(cell.slices.begin(), cell.slices.end(), [](const std::string& s) {
+      return std::find(kHeldOutSlices.begin(), kHeldOutSlices.end(), s) != kHeldOutSlices.end();
+    });
+    if (one_axis) out.push_back(cell);
+  }
+  return out;
+}
+
+bool truth_cached(const StabilityCell& cell) {
+  return reference_cached(cell.scene, stability_reference_budget(cell), ReferenceMode::kRgb);
+}
+
 ErrorModel load_model(const GovernorCheckOptions& o) {
   return load_error_model(o.error_model.empty() ? shipped_error_model_file() : o.error_model);
 }
@@ -76,13 +94,8 @@ std::vector<View> views(const GovernorCheckOptions& o, const ErrorModel& model) 
     out.push_back({scene, false, std::nullopt});
   }
   if (!o.held_out) return out;
-  for (const StabilityCell& cell : plan_stability(StabilityOptions{})) {
-    if (cell.point.altitude_m < 0) continue;  // inside the planet: no ground truth
-    bool one_axis = std::any_of(cell.slices.begin(), cell.slices.end(), [](const std::string& s) {
-      return std::find(kHeldOutSlices.begin(), kHeldOutSlices.end(), s) != kHeldOutSlices.end();
-    });
-    if (!one_axis) continue;
-    if (!reference_cached(cell.scene, stability_reference_budget(cell), ReferenceMode::kRgb)) continue;
+  for (const StabilityCell& cell : held_out_cells()) {
+    if (!o.render_held_out && !truth_cached(cell)) continue;
     out.push_back({cell.scene, true, cell});
   }
   return out;
@@ -97,6 +110,20 @@ void check_governor_options(const GovernorCheckOptions& o) {
     throw InputError("lab governor --frames-per-model: must be 0 (the frame alone) or more");
   }
   load_model(o);
+}
+
+HeldOutTruths held_out_truths(const GovernorCheckOptions& o) {
+  HeldOutTruths t;
+  if (!o.held_out) return t;
+  for (const StabilityCell& cell : held_out_cells()) {
+    if (truth_cached(cell)) {
+      ++t.cached;
+    } else if (o.render_held_out) {
+      ++t.to_render;
+      t.seconds += stability_reference_seconds(cell);
+    }
+  }
+  return t;
 }
 
 std::vector<GovernorCheck> run_governor_check(

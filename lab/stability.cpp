@@ -288,6 +288,13 @@ PathBudget stability_reference_budget(const StabilityCell& cell) {
   return PathBudget(spp);
 }
 
+double stability_reference_seconds(const StabilityCell& cell) {
+  // 16x8 at 1024 paths: a few seconds in thin air; paths in dense air
+  // scatter many more times.
+  return 4.0 * stability_reference_budget(cell).spp / 1024.0 *
+         std::max(1.0, cell.point.density / 3.0);
+}
+
 double StabilityResult::worst() const {
   if (std::isnan(error[0])) return error[0];  // no ground truth
   return std::max({error[0], error[1], error[2]});

@@ -122,6 +122,9 @@ std::pair<int, int> parse_shard(const std::string& text);
 // the air is dense (paths there scatter hundreds of times; their noise is
 // taken out of the errors).
 PathBudget stability_reference_budget(const StabilityCell& cell);
+// What rendering that ground truth takes on this project's 2-core machine,
+// in seconds (from a full default sweep: README, the stability map).
+double stability_reference_seconds(const StabilityCell& cell);
 
 // Classifies a technique's image of a cell against the cell's ground truth
 // and its noise; with none (a camera inside the planet), by its values

@@ -4,12 +4,14 @@
 // second it switches technique on its way to 40 000 km, fades each switch so
 // that it does not pop (the measure of the Hillaire issue: a frame's second
 // difference with the switch within 10 % of the worse technique's alone),
-// and a slice that starts within a fade is byte-identical to the whole run.
+// and a slice that starts within a fade is byte-identical to the whole run;
+// the governor's check says up front what it will render.
 #include "render/capture.h"
 
 #include "render/governor.h"
 
 #include "atmosphere/gpu/registry.h"
+#include "lab/governor_check.h"
 #include "lab/scene.h"
 
 #include "core/data_paths.h"
@@ -23,6 +25,8 @@
 #include <unistd.h>
 
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
@@ -227,6 +231,36 @@ TEST(GovernorTableTest, TheShippedTableHasEveryLabSceneAndOnlyChoicesTheRegistry
       EXPECT_TRUE(scenes.count(s.name)) << s.name;
     }
   }
+}
+
+// `planet lab governor` says before any work how many held-out ground
+// truths it will render: all 126 views' counted, none when told to use the
+// cached alone, none without held-out views.
+TEST(GovernorCheckTest, SaysWhichHeldOutGroundTruthsItWillRender) {
+  const char* was = std::getenv("PLANET_CACHE_DIR");
+  std::string saved = was ? was : "";
+  std::filesystem::path empty = std::filesystem::temp_directory_path() /
+                                fmt::format("planet-held-out-{}", getpid());
+  std::filesystem::create_directories(empty);
+  setenv("PLANET_CACHE_DIR", empty.c_str(), 1);
+  GovernorCheckOptions o;
+  HeldOutTruths all = held_out_truths(o);
+  EXPECT_EQ(all.cached + all.to_render, 126);
+  EXPECT_GT(all.to_render, 100) << "an empty cache: only the shipped ground truths are there";
+  EXPECT_GT(all.seconds, 60.0 * 5);
+  o.render_held_out = false;
+  HeldOutTruths cached = held_out_truths(o);
+  EXPECT_EQ(cached.cached, all.cached);
+  EXPECT_EQ(cached.to_render, 0);
+  o.held_out = false;
+  HeldOutTruths none = held_out_truths(o);
+  EXPECT_EQ(none.cached + none.to_render, 0);
+  if (was) {
+    setenv("PLANET_CACHE_DIR", saved.c_str(), 1);
+  } else {
+    unsetenv("PLANET_CACHE_DIR");
+  }
+  std::filesystem::remove_all(empty);
 }
 
 TEST_F(GovernorGLTest, ANamedTechniqueWinsOverTheBudget) {
