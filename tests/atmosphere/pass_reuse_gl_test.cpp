@@ -41,6 +41,25 @@ std::set<std::string> reused(const FrameStats& stats) {
   return out;
 }
 
+// The largest difference of a value of a from b's, over the larger of the
+// two: 0 for the same bits, about 6e-8 for a float's last bit.
+//
+// What a pruned frame may differ by from the frame with nothing pruned: a
+// few of a float's last bits. The per-pixel path's own shader (compiled
+// without the LUT path and the terrain's shadow, which never reaches that
+// high) sums its march in another order of operations: 3.1e-7 at most
+// over the scenes and the climb below.
+constexpr double kSamePixels = 1e-6;
+double largest_relative_difference(const std::vector<float>& a, const std::vector<float>& b) {
+  if (a.size() != b.size()) return INFINITY;
+  double worst = 0.0;
+  for (size_t i = 0; i < b.size(); ++i) {
+    double scale = std::max(std::abs(double(a[i])), std::abs(double(b[i])));
+    if (scale > 0.0) worst = std::max(worst, std::abs(double(a[i]) - double(b[i])) / scale);
+  }
+  return worst;
+}
+
 // The largest over R, G and B of the RMSE of a against b over the mean of
 // b: the lab's relative RMSE, without its noise terms (neither is noisy).
 double relative_rmse(const std::vector<float>& a, const std::vector<float>& b) {
@@ -205,7 +224,7 @@ TEST_F(PassReuseGLTest, NoAerialPerspectiveWithoutASurfaceInItsRangeAndTheSameIm
 
 // From 40 000 km the sky pass marches only the pixels inside the shell's
 // screen bound; the others are space, and the sun's disk there, drawn to
-// the same bits.
+// the same values (kSamePixels).
 TEST_F(PassReuseGLTest, FromSpaceOnlyThePixelsInTheShellsBoundAreShadedAndTheImageIsTheSame) {
   auto view = view_from_place(body_.shape, {glm::radians(10.0), glm::radians(20.0), 40000e3},
                               30.0, -75.0, 50.0, 30.0, 0.0);
@@ -228,13 +247,14 @@ TEST_F(PassReuseGLTest, FromSpaceOnlyThePixelsInTheShellsBoundAreShadedAndTheIma
   EXPECT_LT(hillaire->shaded_fraction(), 0.5);
   EXPECT_GT(hillaire->shaded_fraction(), 0.05);
   std::vector<float> hdr = pruned.read_hdr();
-  EXPECT_EQ(hdr, unpruned.read_hdr());
+  EXPECT_LE(largest_relative_difference(hdr, unpruned.read_hdr()), kSamePixels);
   EXPECT_GT(*std::max_element(hdr.begin(), hdr.end()), 1000.0f) << "the sun's disk is in view";
 }
 
 // Every pruning by view (no froxels without a surface in their range, no
-// march outside the shell's screen bound) leaves the image as it was, to
-// the bit: on every canonical scene, and on a climb from 2 m to 1e8 m.
+// march outside the shell's screen bound, the per-pixel path's own shader)
+// leaves the image as it was, to a few of a float's last bits
+// (kSamePixels): on every canonical scene, and on a climb from 2 m to 1e8 m.
 TEST_F(PassReuseGLTest, PruningByViewChangesNoPixelOnTheCanonicalScenesOrAClimbTo1e8m) {
   auto compare = [](const Body& body, const AtmosphereModel& model, int width, int height,
                     const Camera& camera, const glm::dvec3& sun, const std::string& where) {
@@ -244,7 +264,9 @@ TEST_F(PassReuseGLTest, PruningByViewChangesNoPixelOnTheCanonicalScenesOrAClimbT
     unpruned.set_body(body, model, make_technique("hillaire"));
     FrameStats stats = pruned.render(camera, sun, 10.0);
     unpruned.render(camera, sun, 10.0);
-    EXPECT_EQ(pruned.read_hdr(), unpruned.read_hdr()) << where;
+    EXPECT_LE(largest_relative_difference(pruned.read_hdr(), unpruned.read_hdr()),
+              kSamePixels)
+        << where;
     return stats;
   };
   for (const Scene& scene : canonical_scenes()) {

@@ -126,8 +126,9 @@ class HillaireTechnique final : public AtmosphereTechnique {
   // shader over the tiles that sky_march_tiles.comp lists.
   Program sky_unmarched_program_, sky_tiles_program_, march_tiles_program_;
   // The sky pass for frames on the per-pixel path alone (hillaire_sky.frag's
-  // NO_LUT), for coloured and grey Mie; compiled when first drawn.
-  std::array<std::optional<Program>, 2> sky_space_programs_;
+  // NO_LUT), for coloured and grey Mie (+1), with and without the
+  // terrain's shadow (+2); compiled when first drawn.
+  std::array<std::optional<Program>, 4> sky_space_programs_;
   bool grey_mie_ = false;  // the model's Mie scattering is the same in every channel
   Buffer march_tiles_;  // the indirect draw's command, then the tiles
   size_t march_tiles_bytes_ = 0;
