@@ -82,15 +82,16 @@ void keep_sweep_tables(const SweepPlan& plan) {
     return;
   }
   std::fflush(stdout);
+  std::string advice =
+      room ? fmt::format("; set PLANET_BRUNETON_CACHE_MB={:.0f} or more to keep them",
+                         std::ceil(double(need) / (1024.0 * 1024.0)))
+           : "";
   std::fprintf(stderr,
                "lab: its bruneton tables take %.1f GB, over the %.1f GB that %s: a table pushed "
                "out is computed again before its cell (seconds to minutes each)%s\n",
                gb(need), gb(limit),
                room ? "PLANET_BRUNETON_CACHE_MB keeps" : "the cache's disk has room for",
-               room ? fmt::format("; set PLANET_BRUNETON_CACHE_MB={:.0f} or more to keep them",
-                                  std::ceil(double(need) / (1024.0 * 1024.0)))
-                          .c_str()
-                    : "");
+               advice.c_str());
 }
 
 void run_lab(LabArgs& args) {

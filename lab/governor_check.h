@@ -4,8 +4,9 @@
 // cheapest choice that the lab's exhaustive table says meets the budget; on
 // views held out of the table (the stability map's one-axis cells: other
 // altitudes, sun elevations and variants of each body), its choice is drawn
-// and measured against the cell's ground truth, rendered once and cached. One file per (budget,
-// view), so that a stopped check goes on where it stopped.
+// and measured against the cell's ground truth, rendered once and cached.
+// One file per (budget, view), so that a stopped check goes on where it
+// stopped.
 #include "render/governor.h"
 
 #include <nlohmann/json.hpp>

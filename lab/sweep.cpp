@@ -1,11 +1,9 @@
 #include "lab/sweep.h"
 
-#include "atmosphere/gpu/atmosphere_block.h"
 #include "atmosphere/gpu/registry.h"
 #include "core/atomic_file.h"
 #include "core/data_paths.h"
 #include "core/error.h"
-#include "core/hash.h"
 #include "core/tone_map.h"
 #include "core/version.h"
 #include "gl/texture.h"
@@ -182,12 +180,10 @@ double geometric_mean(const std::vector<double>& v) {
 }  // namespace
 
 uintmax_t sweep_disk_table_bytes(const SweepPlan& plan) {
-  std::set<uint64_t> models;
+  std::set<std::string> models;
   for (const Scene& scene : plan.scenes) {
-    AtmosphereBlock block = make_atmosphere_block(scene_atmosphere(scene, scene_body(scene)));
-    Fnv1a h;
-    h.bytes(&block, sizeof block);
-    models.insert(h.value());
+    models.insert(
+        reference_model_key(scene_atmosphere(scene, scene_body(scene)), ReferenceMode::kRgb));
   }
   uintmax_t per_model = 0;
   for (const auto& [technique, quality] : plan.points) {

@@ -52,6 +52,27 @@ namespace {
 
 std::atomic<uintmax_t> cache_floor{0};
 
+struct TableFile {
+  std::filesystem::file_time_type used;
+  uintmax_t bytes;
+  std::filesystem::path file;
+};
+
+// The folder's table files, each with its size and when it was last used.
+std::vector<TableFile> table_files() {
+  std::vector<TableFile> files;
+  std::error_code ec;
+  for (auto it = std::filesystem::directory_iterator(cache_dir("bruneton"), ec);
+       !ec && it != std::filesystem::directory_iterator(); it.increment(ec)) {
+    if (it->path().extension() != ".tables") continue;
+    std::error_code e1, e2;
+    uintmax_t bytes = it->file_size(e1);
+    auto used = it->last_write_time(e2);
+    if (!e1 && !e2) files.push_back({used, bytes, it->path()});
+  }
+  return files;
+}
+
 // $PLANET_BRUNETON_CACHE_MB in bytes, when it is set and a size.
 std::optional<uintmax_t> limit_from_environment(bool say_why_not) {
   const char* env = std::getenv("PLANET_BRUNETON_CACHE_MB");
@@ -79,39 +100,21 @@ void set_bruneton_cache_floor(uintmax_t bytes) { cache_floor = bytes; }
 
 uintmax_t bruneton_cache_bytes() {
   uintmax_t total = 0;
-  std::error_code ec;
-  for (auto it = std::filesystem::directory_iterator(cache_dir("bruneton"), ec);
-       !ec && it != std::filesystem::directory_iterator(); it.increment(ec)) {
-    std::error_code e;
-    uintmax_t bytes = it->path().extension() == ".tables" ? it->file_size(e) : 0;
-    if (!e) total += bytes;
-  }
+  for (const TableFile& f : table_files()) total += f.bytes;
   return total;
 }
 
 int prune_bruneton_cache(uintmax_t limit, const std::filesystem::path& keep) {
-  struct Entry {
-    std::filesystem::file_time_type used;
-    uintmax_t bytes;
-    std::filesystem::path file;
-  };
-  std::vector<Entry> entries;
+  std::vector<TableFile> entries;
   uintmax_t total = 0;
-  std::error_code ec;
-  for (auto it = std::filesystem::directory_iterator(cache_dir("bruneton"), ec);
-       !ec && it != std::filesystem::directory_iterator(); it.increment(ec)) {
-    if (it->path().extension() != ".tables") continue;
-    std::error_code e1, e2;
-    uintmax_t bytes = it->file_size(e1);
-    auto used = it->last_write_time(e2);
-    if (e1 || e2) continue;
-    total += bytes;
-    if (it->path() != keep) entries.push_back({used, bytes, it->path()});
+  for (TableFile& f : table_files()) {
+    total += f.bytes;
+    if (f.file != keep) entries.push_back(std::move(f));
   }
   std::sort(entries.begin(), entries.end(),
-            [](const Entry& a, const Entry& b) { return a.used < b.used; });
+            [](const TableFile& a, const TableFile& b) { return a.used < b.used; });
   int removed = 0;
-  for (const Entry& e : entries) {
+  for (const TableFile& e : entries) {
     if (total <= limit) break;
     std::error_code e1;
     if (std::filesystem::remove(e.file, e1)) total -= e.bytes, ++removed;
