@@ -505,7 +505,7 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
     glUniform2f(march_tiles_program_.uniform("u_viewport"), float(w), float(h));
     // Where hillaire_sky.frag's blend from the froxels to the march begins.
     glUniform1f(march_tiles_program_.uniform("u_blend_start"), float(0.8 * aerial_range_));
-    glDispatchCompute(GLuint(tiles_x), GLuint(tiles_y), 1);
+    glDispatchCompute(groups(tiles_x), groups(tiles_y), 1);
     glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
     begin_sky(sky_tiles_program_);
     glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMarchTilesBinding, march_tiles_.id());
