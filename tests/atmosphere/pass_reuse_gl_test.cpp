@@ -251,6 +251,36 @@ TEST_F(PassReuseGLTest, FromSpaceOnlyThePixelsInTheShellsBoundAreShadedAndTheIma
   EXPECT_GT(*std::max_element(hdr.begin(), hdr.end()), 1000.0f) << "the sun's disk is in view";
 }
 
+// On the ground the sky pass draws every pixel without the sun's disk,
+// then the whole shader over the disk's screen bound (hillaire_sky.frag):
+// the same image as the whole shader over every pixel, with the sun's disk
+// in it, where the disk lies inside the frame and where it lies on its
+// left edge (a bound clamped to the frame).
+TEST_F(PassReuseGLTest, OnTheGroundTheSunsDiskIsDrawnWithinItsBoundAndTheImageIsTheSame) {
+  const int width = 96, height = 64;
+  for (glm::dvec2 pixel : {glm::dvec2(30.5, 40.5), glm::dvec2(0.2, 45.5)}) {
+    // 5 km up over the Alps, looking up: no peak hides the sun, and the
+    // froxels and the march still serve the peaks at the frame's foot.
+    auto view = view_from_place(body_.shape, {glm::radians(46.55), glm::radians(7.98), 5000.0},
+                                60.0, 20.0, 50.0, 25.0, 0.0);
+    const double t = std::tan(0.5 * view.camera.vertical_fov);
+    const glm::dvec2 ndc = 2.0 * pixel / glm::dvec2(width, height) - 1.0;
+    view.sun_dir_body = glm::normalize(
+        view.camera.body_from_camera * glm::dvec3(ndc.x * t * width / height, ndc.y * t, -1.0));
+    FrameRenderer pruned(width, height), unpruned(width, height);
+    unpruned.set_view_pruning(false);
+    pruned.set_body(body_, model_, make_technique("hillaire"));
+    unpruned.set_body(body_, model_, make_technique("hillaire"));
+    pruned.render(view.camera, view.sun_dir_body, 10.0);
+    unpruned.render(view.camera, view.sun_dir_body, 10.0);
+    std::vector<float> hdr = pruned.read_hdr();
+    const std::string where = "sun on pixel (" + std::to_string(pixel.x) + ", " +
+                              std::to_string(pixel.y) + ")";
+    EXPECT_LE(largest_relative_difference(hdr, unpruned.read_hdr()), kSamePixels) << where;
+    EXPECT_GT(*std::max_element(hdr.begin(), hdr.end()), 1000.0f) << where;
+  }
+}
+
 // Every pruning by view (no froxels without a surface in their range, no
 // march outside the shell's screen bound, the per-pixel path's own shader)
 // leaves the image as it was, to a few of a float's last bits

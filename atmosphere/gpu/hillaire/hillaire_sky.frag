@@ -18,6 +18,11 @@
 // and a discarded pixel still runs the shader with its block. The pixel's
 // NDC comes from its window position, so that both parts see the same.
 //
+// The first part also leaves out the sun's disk (NO_SUN_DISK), whose
+// transmittance lookup and limb darkening took a sixth of it on the
+// ground; the whole shader then draws again the few pixels of the sun's
+// screen bound.
+//
 // For frames on the per-pixel path alone (u_lut_weight 0), the shader is
 // compiled with NO_LUT, without the LUT path, which llvmpipe would run
 // over every pixel for a weight of 0; where the model's Mie scattering is
@@ -192,16 +197,20 @@ void main() {
       lut_radiance = max(lut_radiance - u_shadow_loss_weight * loss * atmosphere.solar_irradiance,
                          vec3(0.0));
 #endif
+#ifndef NO_SUN_DISK
       if (open_sky) {
         float mu = dot(camera, dir) / length(camera);
         lut_radiance += sun_disk(dir, transmittance_lookup(atmosphere, u_camera_r, mu));
       }
+#endif
     }
   }
 #endif
 
   vec3 march_radiance = march_luminance + march_transmittance * surface;
+#ifndef NO_SUN_DISK
   if (open_sky) march_radiance += sun_disk(dir, march_transmittance);
+#endif
 
   vec3 radiance = mix(march_radiance, lut_radiance, u_lut_weight);
   // Within half-float range, so that a 16-bit target cannot overflow.

@@ -85,6 +85,17 @@ constexpr GLuint kMarchTilesBinding = 4;
 // Texture unit of the froxels' shadow loss in the sky pass.
 constexpr GLuint kShadowLossUnit = 10;
 
+// The pixels of an NDC rectangle on a w x h target with `margin` to spare
+// on each side, clamped to the target: x, y, width, height.
+glm::ivec4 pixel_rect(const NdcRect& ndc, int w, int h, int margin) {
+  auto pixel = [](double x, int size) { return 0.5 * (x + 1.0) * size; };
+  int x0 = std::clamp(int(std::floor(pixel(ndc.min.x, w))) - margin, 0, w);
+  int x1 = std::clamp(int(std::ceil(pixel(ndc.max.x, w))) + margin, 0, w);
+  int y0 = std::clamp(int(std::floor(pixel(ndc.min.y, h))) - margin, 0, h);
+  int y1 = std::clamp(int(std::ceil(pixel(ndc.max.y, h))) + margin, 0, h);
+  return glm::ivec4(x0, y0, std::max(x1 - x0, 0), std::max(y1 - y0, 0));
+}
+
 // Rounds x to the nearest multiple of step (none when step is 0).
 double quantize(double x, double step) { return step > 0.0 ? std::round(x / step) * step : x; }
 
@@ -131,7 +142,8 @@ HillaireTechnique::HillaireTechnique(Settings settings)
                        {"TERRAIN_SHADOWS 1", "TERRAIN_SHADOW_LOSS 1"}))),
       sky_program_(sky_program(settings, "gl/shaders/fullscreen.vert")),
       space_program_(Program::graphics("gl/shaders/fullscreen.vert", "atmosphere/gpu/space.frag")),
-      sky_unmarched_program_(sky_program(settings, "gl/shaders/fullscreen.vert", {"NO_MARCH 1"})),
+      sky_unmarched_program_(
+          sky_program(settings, "gl/shaders/fullscreen.vert", {"NO_MARCH 1", "NO_SUN_DISK 1"})),
       sky_tiles_program_(sky_program(settings, "atmosphere/gpu/hillaire/sky_tiles.vert")),
       march_tiles_program_(Program::compute("atmosphere/gpu/hillaire/sky_march_tiles.comp")),
       transmittance_lut_(make_texture_2d(GL_RGBA32F, shared::kTransmittanceLutWidth,
@@ -388,12 +400,7 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   if (frame.view_pruning && lut_weight_ == 0.0) {
     if (auto bound = sphere_ndc_bound(-frame.camera_atmo, top,
                                       glm::dmat3(frame.atmo_ray_from_ndc))) {
-      auto pixel = [](double ndc, int size) { return 0.5 * (ndc + 1.0) * size; };
-      int x0 = std::clamp(int(std::floor(pixel(bound->min.x, w))) - 2, 0, w);
-      int x1 = std::clamp(int(std::ceil(pixel(bound->max.x, w))) + 2, 0, w);
-      int y0 = std::clamp(int(std::floor(pixel(bound->min.y, h))) - 2, 0, h);
-      int y1 = std::clamp(int(std::ceil(pixel(bound->max.y, h))) + 2, 0, h);
-      shaded = glm::ivec4(x0, y0, std::max(x1 - x0, 0), std::max(y1 - y0, 0));
+      shaded = pixel_rect(*bound, w, h, 2);
     }
   }
   shaded_fraction_ = double(shaded.z) * double(shaded.w) / (double(w) * double(h));
@@ -481,10 +488,26 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
     sky_pass_.draw();
     glDisable(GL_SCISSOR_TEST);
   } else {
-    // Every pixel without the march, then the march's tiles (see
-    // hillaire_sky.frag): an 8 x 8 tile with a surface past the froxels'
-    // blend, listed on the GPU and drawn as one quad each.
-    begin_sky(sky_unmarched_program_);
+    // Every pixel without the march and the sun's disk, then the march's
+    // tiles (see hillaire_sky.frag): an 8 x 8 tile with a surface past the
+    // froxels' blend, listed on the GPU and drawn as one quad each; then
+    // the pixels of the sun's disk. The disk's bound is that of a sphere
+    // at a distance of 1 along the sun that it fills. A camera lifted onto
+    // the bottom sphere raises the rays under its horizon
+    // (lifted_horizon.glsl), which may carry the disk out of its bound:
+    // there the first part keeps the disk.
+    const bool lifted = r < r_min;
+    std::optional<NdcRect> sun_bound;
+    if (!lifted) {
+      sun_bound = sphere_ndc_bound(glm::dvec3(frame.sun_dir_atmo),
+                                   std::sin(model_.sun_angular_radius),
+                                   glm::dmat3(frame.atmo_ray_from_ndc));
+    }
+    if (lifted && !sky_unmarched_sun_program_) {
+      sky_unmarched_sun_program_ =
+          sky_program(settings_, "gl/shaders/fullscreen.vert", {"NO_MARCH 1"});
+    }
+    begin_sky(lifted ? *sky_unmarched_sun_program_ : sky_unmarched_program_);
     sky_pass_.draw();
     const int tiles_x = (w + kMarchTile - 1) / kMarchTile;
     const int tiles_y = (h + kMarchTile - 1) / kMarchTile;
@@ -512,6 +535,14 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, march_tiles_.id());
     sky_pass_.draw_indirect();
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
+    const glm::ivec4 disk = sun_bound ? pixel_rect(*sun_bound, w, h, 2) : glm::ivec4(0);
+    if (disk.z > 0 && disk.w > 0) {
+      begin_sky(sky_program_);
+      glEnable(GL_SCISSOR_TEST);
+      glScissor(disk.x, disk.y, disk.z, disk.w);
+      sky_pass_.draw();
+      glDisable(GL_SCISSOR_TEST);
+    }
   }
   timer.end();
 }

@@ -125,6 +125,9 @@ class HillaireTechnique final : public AtmosphereTechnique {
   // (hillaire_sky.frag): every pixel without the march, then the whole
   // shader over the tiles that sky_march_tiles.comp lists.
   Program sky_unmarched_program_, sky_tiles_program_, march_tiles_program_;
+  // The first part with the sun's disk, for a lifted camera; compiled when
+  // first drawn.
+  std::optional<Program> sky_unmarched_sun_program_;
   // The sky pass for frames on the per-pixel path alone (hillaire_sky.frag's
   // NO_LUT), for coloured and grey Mie (+1), with and without the
   // terrain's shadow (+2); compiled when first drawn.
