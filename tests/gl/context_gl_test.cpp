@@ -3,6 +3,8 @@
 #include <epoxy/gl.h>
 #include <gtest/gtest.h>
 
+#include <string>
+
 #include "tests/unity_id.h"
 
 namespace planet {
@@ -26,6 +28,50 @@ TEST(ContextGLTest, DriverErrorsBecomeExceptions) {
   glBindTexture(GL_TEXTURE_2D, 123456);  // not a texture name: GL_INVALID_OPERATION
   EXPECT_THROW(check_gl_errors("bad bind"), std::runtime_error);
   EXPECT_NO_THROW(check_gl_errors("after"));
+}
+
+// A software driver's shaders run in threads it starts with the context:
+// they flush denormal floats to zero, as GPUs do, while the thread that
+// made the context keeps its own mode (the CPU's code is unchanged).
+TEST(ContextGLTest, SoftwareShadersFlushDenormalsAndTheCallingThreadKeepsThem) {
+  auto context = GlContext::create_headless();
+  volatile float tiny = 1e-20f;
+  EXPECT_GT(tiny * tiny, 0.0f) << "this thread keeps denormals";
+  if (context->renderer().find("llvmpipe") == std::string::npos) {
+    GTEST_SKIP() << "a GPU's driver keeps its own mode: " << context->renderer();
+  }
+  const char* source =
+      "#version 450\n"
+      "layout(local_size_x = 1) in;\n"
+      "layout(std430, binding = 0) buffer Out { float v[2]; };\n"
+      "uniform float u_tiny;\n"
+      "void main() { v[0] = u_tiny * u_tiny; v[1] = u_tiny; }\n";
+  GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
+  glShaderSource(shader, 1, &source, nullptr);
+  glCompileShader(shader);
+  GLuint program = glCreateProgram();
+  glAttachShader(program, shader);
+  glLinkProgram(program);
+  GLint linked = 0;
+  glGetProgramiv(program, GL_LINK_STATUS, &linked);
+  ASSERT_TRUE(linked);
+  GLuint buffer = 0;
+  glCreateBuffers(1, &buffer);
+  const float start[2] = {-1.0f, -1.0f};
+  glNamedBufferStorage(buffer, sizeof(start), start, 0);
+  glUseProgram(program);
+  glUniform1f(glGetUniformLocation(program, "u_tiny"), 1e-20f);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer);
+  glDispatchCompute(1, 1, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  float out[2] = {-1.0f, -1.0f};
+  glGetNamedBufferSubData(buffer, 0, sizeof(out), out);
+  EXPECT_FLOAT_EQ(out[1], 1e-20f) << "the shader ran";
+  EXPECT_EQ(out[0], 0.0f) << "1e-40, a denormal, flushed";
+  glDeleteBuffers(1, &buffer);
+  glDeleteProgram(program);
+  glDeleteShader(shader);
+  check_gl_errors("denormals test");
 }
 
 }  // namespace PLANET_TEST_ID
