@@ -281,6 +281,33 @@ TEST_F(PassReuseGLTest, OnTheGroundTheSunsDiskIsDrawnWithinItsBoundAndTheImageIs
   }
 }
 
+// Over Mars's northern lowlands, 748 m below the bottom sphere, the camera
+// is lifted onto it and rays under its horizon are raised
+// (lifted_horizon.glsl): there the first part of the sky pass keeps the
+// sun's disk. The sun 15 deg up ahead (lower, Mars's dust dims its disk
+// to nothing): the same image as the unpruned frame's, the disk in it.
+TEST_F(PassReuseGLTest, OverGroundBelowTheBottomSphereTheSunsDiskIsTheUnprunedFramesToo) {
+  Body mars = load_body(data_dir() / "planets" / "mars.json");
+  AtmosphereModel model = load_atmosphere(mars);
+  const int width = 96, height = 54;
+  auto view = view_from_place(mars.shape, {glm::radians(18.65), glm::radians(-134.8), -747.912},
+                              90.0, 10.0, 20.0, 10.0, 0.0);
+  const double t = std::tan(0.5 * view.camera.vertical_fov);
+  const glm::dvec2 ndc = 2.0 * glm::dvec2(48.5, 40.5) / glm::dvec2(width, height) - 1.0;
+  view.sun_dir_body = glm::normalize(
+      view.camera.body_from_camera * glm::dvec3(ndc.x * t * width / height, ndc.y * t, -1.0));
+  FrameRenderer pruned(width, height), unpruned(width, height);
+  for (FrameRenderer* r : {&pruned, &unpruned}) r->set_terrain_wait(120.0);
+  unpruned.set_view_pruning(false);
+  pruned.set_body(mars, model, make_technique("hillaire"));
+  unpruned.set_body(mars, model, make_technique("hillaire"));
+  pruned.render(view.camera, view.sun_dir_body, 10.0);
+  unpruned.render(view.camera, view.sun_dir_body, 10.0);
+  std::vector<float> hdr = pruned.read_hdr();
+  EXPECT_LE(largest_relative_difference(hdr, unpruned.read_hdr()), kSamePixels);
+  EXPECT_GT(*std::max_element(hdr.begin(), hdr.end()), 1000.0f) << "the sun's disk is in view";
+}
+
 // Every pruning by view (no froxels without a surface in their range, no
 // march outside the shell's screen bound, the per-pixel path's own shader)
 // leaves the image as it was, to a few of a float's last bits

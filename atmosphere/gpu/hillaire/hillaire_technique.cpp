@@ -495,8 +495,9 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
     // at a distance of 1 along the sun that it fills. A camera lifted onto
     // the bottom sphere raises the rays under its horizon
     // (lifted_horizon.glsl), which may carry the disk out of its bound:
-    // there the first part keeps the disk.
-    const bool lifted = r < r_min;
+    // there the first part keeps the disk, with a metre to spare for the
+    // shader's float |camera| (half a metre a step at Earth's radius).
+    const bool lifted = r < r_min + 1.0;
     std::optional<NdcRect> sun_bound;
     if (!lifted) {
       sun_bound = sphere_ndc_bound(glm::dvec3(frame.sun_dir_atmo),
