@@ -79,6 +79,34 @@ double relative_rmse(const std::vector<float>& a, const std::vector<float>& b) {
   return worst;
 }
 
+// The direction of the centre of `pixel` (from the frame's bottom left)
+// of a width x height frame of `camera`: where a test puts the sun.
+glm::dvec3 toward_pixel(const Camera& camera, glm::dvec2 pixel, int width, int height) {
+  const double t = std::tan(0.5 * camera.vertical_fov);
+  const glm::dvec2 ndc = 2.0 * pixel / glm::dvec2(width, height) - 1.0;
+  return glm::normalize(camera.body_from_camera *
+                        glm::dvec3(ndc.x * t * width / height, ndc.y * t, -1.0));
+}
+
+// The frame of `view` with the sun on `pixel`, pruned and not: the same to
+// kSamePixels, and the sun's disk in it (far brighter than any sky).
+void expect_the_suns_disk_as_unpruned(const Body& body, const AtmosphereModel& model,
+                                      PlaceView view, glm::dvec2 pixel, int width, int height) {
+  view.sun_dir_body = toward_pixel(view.camera, pixel, width, height);
+  FrameRenderer pruned(width, height), unpruned(width, height);
+  for (FrameRenderer* r : {&pruned, &unpruned}) r->set_terrain_wait(120.0);
+  unpruned.set_view_pruning(false);
+  pruned.set_body(body, model, make_technique("hillaire"));
+  unpruned.set_body(body, model, make_technique("hillaire"));
+  pruned.render(view.camera, view.sun_dir_body, 10.0);
+  unpruned.render(view.camera, view.sun_dir_body, 10.0);
+  std::vector<float> hdr = pruned.read_hdr();
+  const std::string where =
+      "sun on pixel (" + std::to_string(pixel.x) + ", " + std::to_string(pixel.y) + ")";
+  EXPECT_LE(largest_relative_difference(hdr, unpruned.read_hdr()), kSamePixels) << where;
+  EXPECT_GT(*std::max_element(hdr.begin(), hdr.end()), 1000.0f) << where;
+}
+
 class PassReuseGLTest : public ::testing::Test {
  protected:
   void SetUp() override {
@@ -231,10 +259,7 @@ TEST_F(PassReuseGLTest, FromSpaceOnlyThePixelsInTheShellsBoundAreShadedAndTheIma
   // The sun in the frame, in space beside the disk, on the centre of pixel
   // (80, 50): the disk is smaller than a pixel.
   const int width = 96, height = 64;
-  const double t = std::tan(0.5 * view.camera.vertical_fov);
-  const glm::dvec2 ndc(2.0 * 80.5 / width - 1.0, 2.0 * 50.5 / height - 1.0);
-  view.sun_dir_body = glm::normalize(
-      view.camera.body_from_camera * glm::dvec3(ndc.x * t * width / height, ndc.y * t, -1.0));
+  view.sun_dir_body = toward_pixel(view.camera, {80.5, 50.5}, width, height);
   FrameRenderer pruned(width, height), unpruned(width, height);
   unpruned.set_view_pruning(false);
   auto technique = std::make_unique<HillaireTechnique>();
@@ -257,27 +282,12 @@ TEST_F(PassReuseGLTest, FromSpaceOnlyThePixelsInTheShellsBoundAreShadedAndTheIma
 // in it, where the disk lies inside the frame and where it lies on its
 // left edge (a bound clamped to the frame).
 TEST_F(PassReuseGLTest, OnTheGroundTheSunsDiskIsDrawnWithinItsBoundAndTheImageIsTheSame) {
-  const int width = 96, height = 64;
+  // 5 km up over the Alps, looking up: no peak hides the sun, and the
+  // froxels and the march still serve the peaks at the frame's foot.
+  auto view = view_from_place(body_.shape, {glm::radians(46.55), glm::radians(7.98), 5000.0},
+                              60.0, 20.0, 50.0, 25.0, 0.0);
   for (glm::dvec2 pixel : {glm::dvec2(30.5, 40.5), glm::dvec2(0.2, 45.5)}) {
-    // 5 km up over the Alps, looking up: no peak hides the sun, and the
-    // froxels and the march still serve the peaks at the frame's foot.
-    auto view = view_from_place(body_.shape, {glm::radians(46.55), glm::radians(7.98), 5000.0},
-                                60.0, 20.0, 50.0, 25.0, 0.0);
-    const double t = std::tan(0.5 * view.camera.vertical_fov);
-    const glm::dvec2 ndc = 2.0 * pixel / glm::dvec2(width, height) - 1.0;
-    view.sun_dir_body = glm::normalize(
-        view.camera.body_from_camera * glm::dvec3(ndc.x * t * width / height, ndc.y * t, -1.0));
-    FrameRenderer pruned(width, height), unpruned(width, height);
-    unpruned.set_view_pruning(false);
-    pruned.set_body(body_, model_, make_technique("hillaire"));
-    unpruned.set_body(body_, model_, make_technique("hillaire"));
-    pruned.render(view.camera, view.sun_dir_body, 10.0);
-    unpruned.render(view.camera, view.sun_dir_body, 10.0);
-    std::vector<float> hdr = pruned.read_hdr();
-    const std::string where = "sun on pixel (" + std::to_string(pixel.x) + ", " +
-                              std::to_string(pixel.y) + ")";
-    EXPECT_LE(largest_relative_difference(hdr, unpruned.read_hdr()), kSamePixels) << where;
-    EXPECT_GT(*std::max_element(hdr.begin(), hdr.end()), 1000.0f) << where;
+    expect_the_suns_disk_as_unpruned(body_, model_, view, pixel, 96, 64);
   }
 }
 
@@ -288,24 +298,9 @@ TEST_F(PassReuseGLTest, OnTheGroundTheSunsDiskIsDrawnWithinItsBoundAndTheImageIs
 // to nothing): the same image as the unpruned frame's, the disk in it.
 TEST_F(PassReuseGLTest, OverGroundBelowTheBottomSphereTheSunsDiskIsTheUnprunedFramesToo) {
   Body mars = load_body(data_dir() / "planets" / "mars.json");
-  AtmosphereModel model = load_atmosphere(mars);
-  const int width = 96, height = 54;
   auto view = view_from_place(mars.shape, {glm::radians(18.65), glm::radians(-134.8), -747.912},
                               90.0, 10.0, 20.0, 10.0, 0.0);
-  const double t = std::tan(0.5 * view.camera.vertical_fov);
-  const glm::dvec2 ndc = 2.0 * glm::dvec2(48.5, 40.5) / glm::dvec2(width, height) - 1.0;
-  view.sun_dir_body = glm::normalize(
-      view.camera.body_from_camera * glm::dvec3(ndc.x * t * width / height, ndc.y * t, -1.0));
-  FrameRenderer pruned(width, height), unpruned(width, height);
-  for (FrameRenderer* r : {&pruned, &unpruned}) r->set_terrain_wait(120.0);
-  unpruned.set_view_pruning(false);
-  pruned.set_body(mars, model, make_technique("hillaire"));
-  unpruned.set_body(mars, model, make_technique("hillaire"));
-  pruned.render(view.camera, view.sun_dir_body, 10.0);
-  unpruned.render(view.camera, view.sun_dir_body, 10.0);
-  std::vector<float> hdr = pruned.read_hdr();
-  EXPECT_LE(largest_relative_difference(hdr, unpruned.read_hdr()), kSamePixels);
-  EXPECT_GT(*std::max_element(hdr.begin(), hdr.end()), 1000.0f) << "the sun's disk is in view";
+  expect_the_suns_disk_as_unpruned(mars, load_atmosphere(mars), view, {48.5, 40.5}, 96, 54);
 }
 
 // Every pruning by view (no froxels without a surface in their range, no
