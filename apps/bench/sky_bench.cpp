@@ -15,6 +15,7 @@
 //   planet bench --benchmark_filter='^Sky/.*/mars_'
 //   planet bench --benchmark_filter=^SkyQuality/    (every quality point, Earth ground)
 //   planet bench --benchmark_filter=^SkyHd/         (every technique, Earth ground, 1280x720)
+#include "apps/bench/bench_place.h"
 #include "atmosphere/gpu/registry.h"
 #include "core/data_paths.h"
 #include "gl/context.h"
@@ -111,7 +112,8 @@ void BM_Sky(benchmark::State& state, std::string technique, std::string body_nam
   Body body = load_body(data_dir() / "planets" / (body_name + ".json"));
   AtmosphereModel model = load_atmosphere(body);
   Geodesy geodesy(body.shape);
-  Geodetic place{glm::radians(46.5), glm::radians(8.0), view.altitude_m};
+  const Geodetic place =
+      above_ground(body, {glm::radians(46.5), glm::radians(8.0), view.altitude_m});
   Camera camera =
       geodesy.camera_at(place, 0.0, glm::radians(view.pitch_deg), glm::radians(view.fov_deg));
   glm::dvec3 sun = geodesy.body_from_enu(place) * glm::normalize(glm::dvec3(0.3, 0.5, 0.6));
