@@ -312,6 +312,10 @@ void FrameRenderer::draw_atmosphere(const Camera& camera, const glm::dvec3& sun_
   sky.depth_texture = depth_.id();
   sky.surface_texture = surface_.id();
   sky.ground_below_texture = ground_below_.id();
+  const HeightRange heights = terrain_->surface().heights().range();
+  const double scale_max = std::max({scale.x, scale.y, scale.z});
+  sky.ground_heights = glm::vec2(float(std::min(0.0, heights.min) * scale_max),
+                                 float(std::max(0.0, heights.max) * scale_max));
   sky.target_framebuffer = hdr_fbo_.id();
   const GLint zero = 0;
   glClearNamedFramebufferiv(hdr_fbo_.id(), GL_STENCIL, 0, &zero);

@@ -76,6 +76,10 @@ struct SkyFrame {
   // march the air there.
   GLuint ground_below_texture = 0;
   static constexpr GLuint kGroundBelowUnit = 11;  // sky_pixel.glsl's u_ground_below
+  // The lowest and the highest the ground can come anywhere on the body,
+  // metres above the bottom sphere in atmosphere space (0, 0: a smooth
+  // body): where a surface seen from space can stop a ray.
+  glm::vec2 ground_heights{0.0f, 0.0f};
   // Output: an RGBA16F/32F framebuffer of the final HDR radiance, with an
   // 8-bit stencil cleared to 0 that the technique may use to restrict its
   // passes to the pixels they serve (a fragment shader's branches cost

@@ -23,3 +23,13 @@ const int kForwardGainLutHeight = 64;
 const int kSkyViewLutWidth = 200;
 const int kSkyViewLutHeight = 100;
 const int kAerialPerspectiveSize = 32;
+// hillaire's space-view LUT (space_view_lut.glsl): the azimuth from the
+// sun's by the ray's distance from the planet's centre, and for the air in
+// front of surfaces, by the altitude the ray has come down to, in slices
+// over the ground's range of heights (on Mars, 32 of them left the view
+// from 400 km 1.3 % off the march, 64 0.45 %), marched down to from the
+// top in kSpaceViewUpperSegments.
+const int kSpaceViewLutWidth = 64;
+const int kSpaceViewLutHeight = 192;
+const int kSpaceViewLutDepth = 64;
+const int kSpaceViewUpperSegments = 16;

@@ -64,12 +64,18 @@ double largest_relative_difference(const std::vector<float>& a, const std::vecto
 
 // The largest over R, G and B of the RMSE of a against b over the mean of
 // b: the lab's relative RMSE, without its noise terms (neither is noisy).
-double relative_rmse(const std::vector<float>& a, const std::vector<float>& b) {
+// `lit_only`: over the pixels with light in b alone, for a planet that
+// fills a few pixels of a black frame (the whole frame's would weigh its
+// differences by the frame's size over the planet's).
+double relative_rmse(const std::vector<float>& a, const std::vector<float>& b,
+                     bool lit_only = false) {
   double worst = 0.0;
   for (int c = 0; c < 3; ++c) {
     double sum_sq = 0.0, sum = 0.0;
     size_t n = 0;
     for (size_t i = size_t(c); i < b.size(); i += 4) {
+      const size_t pixel = i - size_t(c);
+      if (lit_only && b[pixel] == 0.0f && b[pixel + 1] == 0.0f && b[pixel + 2] == 0.0f) continue;
       double d = double(a[i]) - double(b[i]);
       sum_sq += d * d;
       sum += b[i];
@@ -356,6 +362,67 @@ TEST_F(PassReuseGLTest, PruningByViewChangesNoPixelOnTheCanonicalScenesOrAClimbT
   FrameStats stats = compare(mars, load_atmosphere(mars), 96, 54, above_mars.camera,
                              above_mars.sun_dir_body, "Mars from 400 km");
   EXPECT_FALSE(ran(stats).count("sky_view_lut")) << "the per-pixel path alone";
+}
+
+// From outside the shell the sky pass reads the space-view LUT where it
+// marched every pixel (space_view_lut.glsl): the image stays within
+// kSpaceViewRmse (relative RMSE over the lit pixels, the worst channel; the
+// worst, 1.15 %, is the twilight limb from 3000 km, where the LUT's
+// columns are far apart on the side away from the sun) of the march's on
+// every
+// canonical scene from outside the shell and on views of Earth (with its
+// terrain) and Mars from 400 km to 1e8 m, the limb and the sun's glow on
+// it in view; the table is marched once for a view and reused after.
+constexpr double kSpaceViewRmse = 0.015;
+TEST_F(PassReuseGLTest, FromSpaceTheSpaceViewLutDrawsWhatTheMarchDrawsToWithinOneAndAHalfPercent) {
+  HillaireTechnique::Settings march, with_lut;
+  march.space_view_lut = false;
+  with_lut.space_view_min_pixels = 0.0;  // these frames are small
+  double worst = 0.0;
+  std::string worst_at;
+  int drawn = 0;
+  auto compare = [&](const Body& body, const AtmosphereModel& model, int width, int height,
+                     const Camera& camera, const glm::dvec3& sun, const std::string& where) {
+    FrameRenderer lut(width, height), marched(width, height);
+    auto technique = std::make_unique<HillaireTechnique>(with_lut);
+    HillaireTechnique* hillaire = technique.get();
+    lut.set_body(body, model, std::move(technique));
+    marched.set_body(body, model, std::make_unique<HillaireTechnique>(march));
+    FrameStats first = lut.render(camera, sun, 10.0);
+    marched.render(camera, sun, 10.0);
+    if (!hillaire->used_space_view()) return;
+    ++drawn;
+    EXPECT_TRUE(ran(first).count("space_view_lut")) << where;
+    EXPECT_TRUE(reused(lut.render(camera, sun, 10.0)).count("space_view_lut")) << where;
+    double e = relative_rmse(lut.read_hdr(), marched.read_hdr(), true);
+    EXPECT_LT(e, kSpaceViewRmse) << where;
+    if (e > worst) {
+      worst = e;
+      worst_at = where;
+    }
+  };
+  for (const Scene& scene : canonical_scenes()) {
+    Body body = scene_body(scene);
+    if (!body.has_atmosphere()) continue;
+    compare(body, scene_atmosphere(scene, body), scene.width, scene.height, scene.camera,
+            scene.sun_dir_body, scene.name);
+  }
+  for (double height : {400e3, 3e6, 4e7, 1e8}) {
+    for (double sun_elevation : {25.0, 2.0, -4.0}) {
+      auto view = view_from_place(body_.shape, {kAlps.lat, kAlps.lon, ground_ + height}, 60.0,
+                                  height < 1e6 ? -18.0 : -89.0, 60.0, sun_elevation, 40.0);
+      compare(body_, model_, 128, 72, view.camera, view.sun_dir_body,
+              "Earth from " + std::to_string(height) + " m, sun at " +
+                  std::to_string(sun_elevation) + " deg");
+    }
+  }
+  Body mars = load_body(data_dir() / "planets" / "mars.json");
+  auto above_mars = view_from_place(mars.shape, {glm::radians(-4.5), glm::radians(137.4), 400e3},
+                                    60.0, -18.0, 60.0, 10.0, 20.0);
+  compare(mars, load_atmosphere(mars), 128, 72, above_mars.camera, above_mars.sun_dir_body,
+          "Mars from 400 km");
+  EXPECT_GE(drawn, 14) << "the views outside the shell drew with the LUT";
+  std::printf("worst relative RMSE of the space-view LUT: %.2e (%s)\n", worst, worst_at.c_str());
 }
 
 }  // namespace PLANET_TEST_ID

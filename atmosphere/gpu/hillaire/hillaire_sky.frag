@@ -26,7 +26,10 @@
 // For frames on the per-pixel path alone (u_lut_weight 0), the shader is
 // compiled with NO_LUT, without the LUT path, which llvmpipe would run
 // over every pixel for a weight of 0; where the model's Mie scattering is
-// grey, also with GREY_MIE (forward_gain).
+// grey, also with GREY_MIE (forward_gain). From outside the shell it is
+// compiled with SPACE_VIEW_LUT too: the march's luminance and
+// transmittance then come from the space-view LUT (space_view_lut.glsl),
+// which the technique marches once for the camera's altitude and sun.
 #include "atmosphere/gpu/hillaire/hillaire_common.glsl"
 #include "atmosphere/gpu/sky_pixel.glsl"
 
@@ -87,6 +90,57 @@ int march_steps(Atmosphere atmosphere, vec3 origin, vec3 dir) {
   int steps = fewest + int(ceil(f * float(PER_PIXEL_STEPS - fewest)));
   return steps + (steps & 1);
 }
+
+#ifdef SPACE_VIEW_LUT
+#include "atmosphere/gpu/hillaire/space_view_lut.glsl"
+layout(binding = 12) uniform sampler2D u_space_open_sky;
+layout(binding = 13) uniform sampler3D u_space_scattering;
+layout(binding = 14) uniform sampler3D u_space_transmittance;
+uniform float u_space_r;  // the camera's distance from the centre the LUT was made for
+uniform vec2 u_ground_heights;  // the LUT's lowest and highest ground, metres
+
+// What the march below would give over the same range, from the LUT: the
+// whole ray for open sky (t_surface 3e38), else the air in front of the
+// surface at t_surface, down to the altitude where the ray meets it. A
+// surface past the ray's closest approach to the centre (a peak beyond the
+// limb's tangent point) takes the air down to the closest approach.
+void space_view(vec3 camera, vec3 dir, float depth, float t_surface, out vec3 luminance,
+                out vec3 transmittance) {
+  luminance = vec3(0.0);
+  transmittance = vec3(1.0);
+  Atmosphere atmosphere = block_atmosphere();
+  vec3 local = u_local_from_atmo * dir;
+  float cos_nadir = -local.z;
+  float p = u_space_r * safe_sqrt(1.0 - cos_nadir * cos_nadir);
+  if (cos_nadir <= 0.0 || p >= atmosphere.top_radius) return;
+  float phi = atan(abs(local.y), local.x);
+  vec2 uv = vec2(space_view_texture_u(space_view_u_from_phi(phi)),
+                 space_view_v_from_p(atmosphere, p));
+  // The air down to the surface, or for open sky down to the bottom sphere
+  // (its half over the limb takes the whole ray instead).
+  float b = dot(camera, dir);
+  float rb = atmosphere.bottom_radius;
+  float h = depth == 0.0 ? 0.0
+                         : (t_surface >= -b ? p - rb : length(camera + t_surface * dir) - rb);
+  vec3 w = vec3(uv, space_view_w_from_altitude(u_ground_heights, h));
+  luminance = texture(u_space_scattering, w).rgb;
+  transmittance = texture(u_space_transmittance, w).rgb;
+  if (depth == 0.0 && p < rb) {
+    // The ground lit behind the air; no sun's disk through the planet.
+    float t_ground = -b - safe_sqrt(rb * rb - p * p);
+    luminance += transmittance * ground_radiance(atmosphere, camera + t_ground * dir, u_sun_dir);
+    transmittance = vec3(0.0);
+  } else if (depth == 0.0) {
+    // The whole ray, and for the sun's disk behind the limb its
+    // transmittance, from where it enters the shell.
+    luminance = texture(u_space_open_sky, uv).rgb;
+    float top = atmosphere.top_radius;
+    vec3 enter = camera + (-b - safe_sqrt(top * top - p * p)) * dir;
+    transmittance = transmittance_lookup(atmosphere, top, dot(enter, dir) / top);
+  }
+  luminance *= atmosphere.solar_irradiance;
+}
+#endif
 
 // A march from the camera over [0, t_max] of the ray: luminance (with the
 // solar irradiance) and transmittance. From outside the atmosphere the
@@ -166,8 +220,12 @@ void main() {
   vec3 march_luminance = vec3(0.0), march_transmittance = vec3(1.0);
 #ifndef NO_MARCH
   if (u_lut_weight < 1.0 || (depth > 0.0 && blend > 0.0)) {
+#ifdef SPACE_VIEW_LUT
+    space_view(camera, dir, depth, t_surface, march_luminance, march_transmittance);
+#else
     float t_max = depth > 0.0 ? t_surface : (hits_ground ? t_ground_near : kFar);
     march(camera, dir, t_max, depth == 0.0 && hits_ground, march_luminance, march_transmittance);
+#endif
   }
 #endif
 

@@ -84,6 +84,9 @@ constexpr GLuint kMarchTilesBinding = 4;
 
 // Texture unit of the froxels' shadow loss in the sky pass.
 constexpr GLuint kShadowLossUnit = 10;
+// Texture units of the space-view LUT's open sky, then its two 3D tables,
+// in the sky pass (hillaire_sky.frag).
+constexpr GLuint kSpaceOpenSkyUnit = 12;
 
 // The pixels of an NDC rectangle on a w x h target with `margin` to spare
 // on each side, clamped to the target: x, y, width, height.
@@ -165,6 +168,13 @@ HillaireTechnique::HillaireTechnique(Settings settings)
       aerial_shadow_loss_(make_texture_3d(GL_RGBA16F, shared::kAerialPerspectiveSize,
                                           shared::kAerialPerspectiveSize,
                                           shared::kAerialPerspectiveSize)),
+      space_open_sky_(
+          make_texture_2d(GL_RGBA32F, shared::kSpaceViewLutWidth, shared::kSpaceViewLutHeight)),
+      space_scattering_(make_texture_3d(GL_RGBA32F, shared::kSpaceViewLutWidth,
+                                        shared::kSpaceViewLutHeight, shared::kSpaceViewLutDepth)),
+      space_transmittance_(make_texture_3d(GL_RGBA32F, shared::kSpaceViewLutWidth,
+                                           shared::kSpaceViewLutHeight,
+                                           shared::kSpaceViewLutDepth)),
       block_(make_buffer(sizeof(AtmosphereBlock), nullptr)) {
   static_assert(hillaire::kScatteringOrders == int(std::tuple_size_v<decltype(order_luts_)>),
                 "one table per order of scattering");
@@ -397,11 +407,50 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   // next to nothing and writes what the sky pass would have.
   const int w = frame.width, h = frame.height;
   glm::ivec4 shaded(0, 0, w, h);  // x, y, width, height
-  if (frame.view_pruning && lut_weight_ == 0.0) {
+  if (lut_weight_ == 0.0) {
     if (auto bound = sphere_ndc_bound(-frame.camera_atmo, top,
                                       glm::dmat3(frame.atmo_ray_from_ndc))) {
       shaded = pixel_rect(*bound, w, h, 2);
     }
+  }
+  // There, the space-view LUT for the camera's distance and the sun's
+  // zenith angle, where the bound holds enough pixels to pay for it, unless
+  // the terrain's shadow is in the air (the LUT knows none). The camera
+  // stands a kilometre clear of the top, where every ray that meets the
+  // shell enters it ahead of the camera. The bound decides it with or
+  // without pruning, so that pruning changes no pixel.
+  const bool space_view = settings_.space_view_lut && lut_weight_ == 0.0 && !shadow &&
+                          r > top + 1e3 &&
+                          double(shaded.z) * double(shaded.w) >= settings_.space_view_min_pixels;
+  used_space_view_ = space_view;
+  if (!frame.view_pruning) shaded = glm::ivec4(0, 0, w, h);
+  const float space_r = float(r);
+  const double sun_z = std::clamp((local * sun).z, -1.0, 1.0);
+  const glm::vec3 sun_zenith_local(float(std::sqrt(1.0 - sun_z * sun_z)), 0.0f, float(sun_z));
+  if (space_view && inputs_.changed("space_view_lut", PassKey(model_key_)
+                                                          .add(space_r)
+                                                          .add(sun_zenith_local)
+                                                          .add(frame.ground_heights))) {
+    timer.begin("space_view_lut");
+    if (!space_view_program_) {
+      space_view_program_ = Program::compute(
+          "atmosphere/gpu/hillaire/space_view_lut.comp",
+          view_defines(settings_, fmt::format("SPACE_VIEW_STEPS {}", settings_.space_view_steps)));
+    }
+    space_view_program_->use();
+    glUniform1f(space_view_program_->uniform("u_camera_r"), space_r);
+    glUniform3fv(space_view_program_->uniform("u_sun_dir_local"), 1,
+                 glm::value_ptr(sun_zenith_local));
+    glUniform2fv(space_view_program_->uniform("u_ground"), 1,
+                 glm::value_ptr(frame.ground_heights));
+    bind_image(0, space_open_sky_.id(), GL_RGBA32F, false);
+    bind_image(1, space_scattering_.id(), GL_RGBA32F, true);
+    bind_image(2, space_transmittance_.id(), GL_RGBA32F, true);
+    glDispatchCompute(groups(shared::kSpaceViewLutWidth), groups(shared::kSpaceViewLutHeight), 1);
+    glMemoryBarrier(kLutBarrier);
+    timer.end();
+  } else if (space_view) {
+    timer.reuse("space_view_lut");
   }
   shaded_fraction_ = double(shaded.z) * double(shaded.w) / (double(w) * double(h));
   if (shaded_fraction_ < 1.0) {
@@ -470,7 +519,19 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
     // alternate runs its sky pass ran under the brute force 5.14-5.54x
     // from 400 km (4.59-5.55x with the shadow compiled in) and 5.28-6.13x
     // from 40 000 km (5.45-5.73x).
-    if (frame.view_pruning && lut_weight_ == 0.0) {
+    if (space_view) {
+      if (!sky_space_view_program_) {
+        sky_space_view_program_ = sky_program(settings_, "gl/shaders/fullscreen.vert",
+                                              {"NO_LUT 1", "SPACE_VIEW_LUT 1"}, false);
+      }
+      begin_sky(*sky_space_view_program_);
+      glBindTextureUnit(kSpaceOpenSkyUnit, space_open_sky_.id());
+      glBindTextureUnit(kSpaceOpenSkyUnit + 1, space_scattering_.id());
+      glBindTextureUnit(kSpaceOpenSkyUnit + 2, space_transmittance_.id());
+      glUniform1f(sky_space_view_program_->uniform("u_space_r"), space_r);
+      glUniform2fv(sky_space_view_program_->uniform("u_ground_heights"), 1,
+                   glm::value_ptr(frame.ground_heights));
+    } else if (frame.view_pruning && lut_weight_ == 0.0) {
       std::optional<Program>& space = sky_space_programs_[(grey_mie_ ? 1 : 0) + (shadow ? 2 : 0)];
       if (!space) {
         std::vector<std::string> parts = {"NO_LUT 1"};

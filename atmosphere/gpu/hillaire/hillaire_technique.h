@@ -49,6 +49,17 @@ class HillaireTechnique final : public AtmosphereTechnique {
     double switch_start = 0.6;
     double switch_end = 0.8;
     Path path = Path::kByAltitude;
+    // From outside the shell, on the per-pixel path alone and with no
+    // terrain's shadow in the air, the sky pass reads the space-view LUT
+    // (space_view_lut.glsl) instead of marching every pixel; false marches.
+    bool space_view_lut = true;
+    int space_view_steps = 40;  // the open-sky table's march, whole rays
+    // ... where the shell's screen bound holds at least this many pixels:
+    // marching the table costs about what marching this many pixels does
+    // (`planet bench --benchmark_filter=HillaireSky/orbit`: 98 ms for
+    // the table, 0.43 us a pixel for the march, 0.04 for the lookup), so
+    // a small disk far off is marched, as cheaply.
+    double space_view_min_pixels = 250000.0;
     // The sky-view LUT is computed at the camera's altitude rounded to
     // this step of log2(altitude) and at the sun's zenith angle rounded to
     // this step, and reused while both round the same: the steps bound what
@@ -88,6 +99,8 @@ class HillaireTechnique final : public AtmosphereTechnique {
   // The fraction of the frame's pixels that the sky pass shaded in the last
   // frame (the rest, outside the shell's screen bound, were space).
   double shaded_fraction() const { return shaded_fraction_; }
+  // Whether the last frame's sky pass read the space-view LUT.
+  bool used_space_view() const { return used_space_view_; }
   // The altitude (metres above the bottom sphere) and the sun's zenith
   // angle (radians) that the sky-view LUT was last computed at.
   double sky_view_altitude() const { return sky_view_altitude_; }
@@ -132,11 +145,15 @@ class HillaireTechnique final : public AtmosphereTechnique {
   // NO_LUT), for coloured and grey Mie (+1), with and without the
   // terrain's shadow (+2); compiled when first drawn.
   std::array<std::optional<Program>, 4> sky_space_programs_;
+  // The space-view LUT's pass and the sky pass that reads it; compiled when
+  // first drawn.
+  std::optional<Program> space_view_program_, sky_space_view_program_;
   bool grey_mie_ = false;  // the model's Mie scattering is the same in every channel
   Buffer march_tiles_;  // the indirect draw's command, then the tiles
   size_t march_tiles_bytes_ = 0;
   Texture transmittance_lut_, multiple_scattering_lut_, ground_irradiance_lut_, forward_gain_lut_,
-      sky_view_lut_, aerial_scattering_, aerial_transmittance_, aerial_shadow_loss_;
+      sky_view_lut_, aerial_scattering_, aerial_transmittance_, aerial_shadow_loss_,
+      space_open_sky_, space_scattering_, space_transmittance_;
   std::array<Texture, 6> order_luts_;  // kScatteringOrders
   Buffer block_;
   FullscreenPass sky_pass_;
@@ -148,6 +165,7 @@ class HillaireTechnique final : public AtmosphereTechnique {
   double lut_weight_ = 1.0;
   double aerial_range_ = 0.0;
   double shaded_fraction_ = 1.0;
+  bool used_space_view_ = false;
 };
 
 }  // namespace planet
