@@ -367,14 +367,13 @@ TEST_F(PassReuseGLTest, PruningByViewChangesNoPixelOnTheCanonicalScenesOrAClimbT
 // From outside the shell the sky pass reads the space-view LUT where it
 // marched every pixel (space_view_lut.glsl): the image stays within
 // kSpaceViewRmse (relative RMSE over the lit pixels, the worst channel; the
-// worst, 1.15 %, is the twilight limb from 3000 km, where the LUT's
-// columns are far apart on the side away from the sun) of the march's on
+// worst, 0.84 %, is the twilight limb from 3000 km) of the march's on
 // every
 // canonical scene from outside the shell and on views of Earth (with its
 // terrain) and Mars from 400 km to 1e8 m, the limb and the sun's glow on
 // it in view; the table is marched once for a view and reused after.
-constexpr double kSpaceViewRmse = 0.015;
-TEST_F(PassReuseGLTest, FromSpaceTheSpaceViewLutDrawsWhatTheMarchDrawsToWithinOneAndAHalfPercent) {
+constexpr double kSpaceViewRmse = 0.01;
+TEST_F(PassReuseGLTest, FromSpaceTheSpaceViewLutDrawsWhatTheMarchDrawsToWithinAPercent) {
   HillaireTechnique::Settings march, with_lut;
   march.space_view_lut = false;
   with_lut.space_view_min_pixels = 0.0;  // these frames are small
@@ -422,6 +421,14 @@ TEST_F(PassReuseGLTest, FromSpaceTheSpaceViewLutDrawsWhatTheMarchDrawsToWithinOn
   compare(mars, load_atmosphere(mars), 128, 72, above_mars.camera, above_mars.sun_dir_body,
           "Mars from 400 km");
   EXPECT_GE(drawn, 14) << "the views outside the shell drew with the LUT";
+  // With the default settings a frame this small is marched: the table
+  // would cost more than the march of its 9216 pixels.
+  auto technique = std::make_unique<HillaireTechnique>();
+  HillaireTechnique* hillaire = technique.get();
+  FrameRenderer small(128, 72);
+  small.set_body(mars, load_atmosphere(mars), std::move(technique));
+  small.render(above_mars.camera, above_mars.sun_dir_body, 10.0);
+  EXPECT_FALSE(hillaire->used_space_view());
   std::printf("worst relative RMSE of the space-view LUT: %.2e (%s)\n", worst, worst_at.c_str());
 }
 
