@@ -170,9 +170,9 @@ HillaireTechnique::HillaireTechnique(Settings settings)
                                           shared::kAerialPerspectiveSize)),
       space_open_sky_(
           make_texture_2d(GL_RGBA32F, shared::kSpaceViewLutWidth, shared::kSpaceViewLutHeight)),
-      space_scattering_(make_texture_3d(GL_RGBA32F, shared::kSpaceViewLutWidth,
+      space_scattering_(make_texture_3d(GL_RGBA16F, shared::kSpaceViewLutWidth,
                                         shared::kSpaceViewLutHeight, shared::kSpaceViewLutDepth)),
-      space_transmittance_(make_texture_3d(GL_RGBA32F, shared::kSpaceViewLutWidth,
+      space_transmittance_(make_texture_3d(GL_RGBA16F, shared::kSpaceViewLutWidth,
                                            shared::kSpaceViewLutHeight,
                                            shared::kSpaceViewLutDepth)),
       block_(make_buffer(sizeof(AtmosphereBlock), nullptr)) {
@@ -444,8 +444,8 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
     glUniform2fv(space_view_program_->uniform("u_ground"), 1,
                  glm::value_ptr(frame.ground_heights));
     bind_image(0, space_open_sky_.id(), GL_RGBA32F, false);
-    bind_image(1, space_scattering_.id(), GL_RGBA32F, true);
-    bind_image(2, space_transmittance_.id(), GL_RGBA32F, true);
+    bind_image(1, space_scattering_.id(), GL_RGBA16F, true);
+    bind_image(2, space_transmittance_.id(), GL_RGBA16F, true);
     glDispatchCompute(groups(shared::kSpaceViewLutWidth), groups(shared::kSpaceViewLutHeight), 1);
     glMemoryBarrier(kLutBarrier);
     timer.end();

@@ -8,8 +8,8 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(rgba32f, binding = 0) uniform writeonly image2D u_open_sky;
-layout(rgba32f, binding = 1) uniform writeonly image3D u_scattering;
-layout(rgba32f, binding = 2) uniform writeonly image3D u_transmittance;
+layout(rgba16f, binding = 1) uniform writeonly image3D u_scattering;
+layout(rgba16f, binding = 2) uniform writeonly image3D u_transmittance;
 
 uniform float u_camera_r;      // outside the top sphere
 uniform vec3 u_sun_dir_local;  // (sin, 0, cos) of the sun's zenith angle at the camera
