@@ -49,6 +49,14 @@ std::vector<QualityParameter> hillaire_quality() {
        true,
        {"off", "on"}},
       kTerrainShadowsParameter,
+      {"space_view",
+       "from outside the atmosphere, read the space-view LUT instead of marching each pixel: "
+       "where the planet fills enough of the frame to pay for it (on), never, or always",
+       0,
+       2,
+       1,
+       true,
+       {"off", "on", "always"}},
   };
 }
 
@@ -63,6 +71,8 @@ std::unique_ptr<AtmosphereTechnique> make_hillaire(const TechniqueChoice& c,
   s.path = HillaireTechnique::Path(c.integer("path"));
   s.multiple = c.integer("multiple") == 1;
   s.terrain_shadows = c.integer("terrain_shadows") == 1;
+  s.space_view_lut = c.integer("space_view") > 0;
+  if (c.integer("space_view") == 2) s.space_view_min_pixels = 0.0;
   return std::make_unique<HillaireTechnique>(s);
 }
 

@@ -30,6 +30,6 @@ const int kAerialPerspectiveSize = 32;
 // from 400 km 1.3 % off the march, 64 0.45 %), marched down to from the
 // top in kSpaceViewUpperSegments.
 const int kSpaceViewLutWidth = 64;
-const int kSpaceViewLutHeight = 192;
+const int kSpaceViewLutHeight = 128;
 const int kSpaceViewLutDepth = 64;
 const int kSpaceViewUpperSegments = 16;

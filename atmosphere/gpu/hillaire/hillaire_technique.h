@@ -56,10 +56,11 @@ class HillaireTechnique final : public AtmosphereTechnique {
     int space_view_steps = 40;  // the open-sky table's march, whole rays
     // ... where the shell's screen bound holds at least this many pixels:
     // marching the table costs about what marching this many pixels does
-    // (`planet bench --benchmark_filter=HillaireSky/orbit`: 98 ms for
-    // the table, 0.43 us a pixel for the march, 0.04 for the lookup), so
-    // a small disk far off is marched, as cheaply.
-    double space_view_min_pixels = 250000.0;
+    // (`planet bench --benchmark_filter=HillaireSky`: 52 ms for the
+    // table; the march 0.46 us a pixel from 400 km, whose bound is the
+    // whole frame, against 0.04 for the lookup), so a small disk far off
+    // is marched, as cheaply.
+    double space_view_min_pixels = 120000.0;
     // The sky-view LUT is computed at the camera's altitude rounded to
     // this step of log2(altitude) and at the sun's zenith angle rounded to
     // this step, and reused while both round the same: the steps bound what
