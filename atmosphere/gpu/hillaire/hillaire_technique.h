@@ -5,9 +5,10 @@
 // each recomputed only when what it depends on changed (PassInputs: the
 // model for the first two, the altitude and the sun's elevation within a
 // stated step for the sky view, the exact view for the froxels), and a
-// per-pixel march
-// with the same multiple-scattering LUT where the LUTs cannot serve (high
-// up and in space). The multiple-scattering LUT sums the orders of
+// per-pixel march with the same multiple-scattering LUT where the LUTs
+// cannot serve (high up and in space), or from outside the shell a
+// space-view LUT for the camera's distance and sun (space_view_lut.glsl)
+// where the planet fills enough of the frame. The multiple-scattering LUT sums the orders of
 // scattering one by one on the paper's 2D table (technique "hillaire"), or
 // takes the paper's Psi_ms = L_2 / (1 - f_ms) (technique "hillaire2020");
 // the first also carries the glow of sunlight that the air scatters
