@@ -145,6 +145,8 @@ HillaireTechnique::HillaireTechnique(Settings settings)
                        {"TERRAIN_SHADOWS 1", "TERRAIN_SHADOW_LOSS 1"}))),
       sky_program_(sky_program(settings, "gl/shaders/fullscreen.vert")),
       space_program_(Program::graphics("gl/shaders/fullscreen.vert", "atmosphere/gpu/space.frag")),
+      space_unlit_program_(Program::graphics("gl/shaders/fullscreen.vert",
+                                             "atmosphere/gpu/space.frag", {"NO_SUN_DISK 1"})),
       sky_unmarched_program_(
           sky_program(settings, "gl/shaders/fullscreen.vert", {"NO_MARCH 1", "NO_SUN_DISK 1"})),
       sky_tiles_program_(sky_program(settings, "atmosphere/gpu/hillaire/sky_tiles.vert")),
@@ -453,28 +455,44 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
     timer.reuse("space_view_lut");
   }
   shaded_fraction_ = double(shaded.z) * double(shaded.w) / (double(w) * double(h));
+  // The sun's disk's screen bound (that of a sphere at a distance of 1
+  // along the sun that it fills), where the passes that leave the disk out
+  // draw it again.
+  const std::optional<NdcRect> sun_bound = sphere_ndc_bound(
+      glm::dvec3(frame.sun_dir_atmo), std::sin(model_.sun_angular_radius),
+      glm::dmat3(frame.atmo_ray_from_ndc));
+  const glm::ivec4 disk = sun_bound ? pixel_rect(*sun_bound, w, h, 2) : glm::ivec4(0);
   if (shaded_fraction_ < 1.0) {
     timer.begin("space");
-    sky_pass_.begin(frame.target_framebuffer, w, h, space_program_);
-    glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, block_.id());
-    glBindTextureUnit(0, frame.depth_texture);
-    glBindTextureUnit(1, frame.surface_texture);
-    glUniform3fv(space_program_.uniform("u_camera"), 1,
-                 glm::value_ptr(glm::vec3(frame.camera_atmo)));
-    glUniformMatrix3fv(space_program_.uniform("u_ray_from_ndc"), 1, GL_FALSE,
-                       glm::value_ptr(frame.atmo_ray_from_ndc));
-    glUniform3fv(space_program_.uniform("u_sun_dir"), 1, glm::value_ptr(frame.sun_dir_atmo));
-    glUniform1f(space_program_.uniform("u_near"), frame.near);
-    // The bands around the shaded rectangle: below, above, left, right.
+    // The bands around the shaded rectangle (below, above, left, right)
+    // without the sun's disk, then the disk's bound with it; the sky pass
+    // then draws the shaded rectangle over whatever of it lay there.
     const glm::ivec4 bands[4] = {{0, 0, w, shaded.y},
                                  {0, shaded.y + shaded.w, w, h - shaded.y - shaded.w},
                                  {0, shaded.y, shaded.x, shaded.w},
                                  {shaded.x + shaded.z, shaded.y, w - shaded.x - shaded.z, shaded.w}};
     glEnable(GL_SCISSOR_TEST);
-    for (const glm::ivec4& band : bands) {
-      if (band.z <= 0 || band.w <= 0) continue;
-      glScissor(band.x, band.y, band.z, band.w);
-      sky_pass_.draw();
+    for (const Program* program : {&space_unlit_program_, &space_program_}) {
+      sky_pass_.begin(frame.target_framebuffer, w, h, *program);
+      glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, block_.id());
+      glBindTextureUnit(0, frame.depth_texture);
+      glBindTextureUnit(1, frame.surface_texture);
+      glUniform3fv(program->uniform("u_camera"), 1, glm::value_ptr(glm::vec3(frame.camera_atmo)));
+      glUniformMatrix3fv(program->uniform("u_ray_from_ndc"), 1, GL_FALSE,
+                         glm::value_ptr(frame.atmo_ray_from_ndc));
+      glUniform3fv(program->uniform("u_sun_dir"), 1, glm::value_ptr(frame.sun_dir_atmo));
+      glUniform1f(program->uniform("u_near"), frame.near);
+      if (program == &space_program_) {
+        if (disk.z <= 0 || disk.w <= 0) break;
+        glScissor(disk.x, disk.y, disk.z, disk.w);
+        sky_pass_.draw();
+        break;
+      }
+      for (const glm::ivec4& band : bands) {
+        if (band.z <= 0 || band.w <= 0) continue;
+        glScissor(band.x, band.y, band.z, band.w);
+        sky_pass_.draw();
+      }
     }
     glDisable(GL_SCISSOR_TEST);
     timer.end();
@@ -559,12 +577,6 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
     // there the first part keeps the disk, with a metre to spare for the
     // shader's float |camera| (half a metre a step at Earth's radius).
     const bool lifted = r < r_min + 1.0;
-    std::optional<NdcRect> sun_bound;
-    if (!lifted) {
-      sun_bound = sphere_ndc_bound(glm::dvec3(frame.sun_dir_atmo),
-                                   std::sin(model_.sun_angular_radius),
-                                   glm::dmat3(frame.atmo_ray_from_ndc));
-    }
     if (lifted && !sky_unmarched_sun_program_) {
       sky_unmarched_sun_program_ =
           sky_program(settings_, "gl/shaders/fullscreen.vert", {"NO_MARCH 1"});
@@ -597,8 +609,7 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, march_tiles_.id());
     sky_pass_.draw_indirect();
     glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
-    const glm::ivec4 disk = sun_bound ? pixel_rect(*sun_bound, w, h, 2) : glm::ivec4(0);
-    if (disk.z > 0 && disk.w > 0) {
+    if (!lifted && disk.z > 0 && disk.w > 0) {
       begin_sky(sky_program_);
       glEnable(GL_SCISSOR_TEST);
       glScissor(disk.x, disk.y, disk.z, disk.w);

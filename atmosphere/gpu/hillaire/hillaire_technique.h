@@ -135,7 +135,7 @@ class HillaireTechnique final : public AtmosphereTechnique {
   AtmosphereModel model_;
   Program transmittance_program_, multiple_scattering_program_, first_order_program_,
       next_order_program_, orders_sum_program_, forward_gain_program_, sky_view_program_,
-      aerial_program_, sky_program_, space_program_;
+      aerial_program_, sky_program_, space_program_, space_unlit_program_;
   // The sky pass in two parts for frames on the LUT path alone
   // (hillaire_sky.frag): every pixel without the march, then the whole
   // shader over the tiles that sky_march_tiles.comp lists.
