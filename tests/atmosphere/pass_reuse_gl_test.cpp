@@ -415,12 +415,25 @@ TEST_F(PassReuseGLTest, FromSpaceTheSpaceViewLutDrawsWhatTheMarchDrawsToWithinAP
                   std::to_string(sun_elevation) + " deg");
     }
   }
+  // The sun's disk in the frame, in space above the limb and lower down.
+  for (glm::dvec2 pixel : {glm::dvec2(64.5, 66.5), glm::dvec2(30.5, 40.5)}) {
+    auto view = view_from_place(body_.shape, {kAlps.lat, kAlps.lon, ground_ + 400e3}, 60.0,
+                                -18.0, 60.0, 25.0, 40.0);
+    view.sun_dir_body = toward_pixel(view.camera, pixel, 128, 72);
+    FrameRenderer lut(128, 72);
+    lut.set_body(body_, model_, std::make_unique<HillaireTechnique>(with_lut));
+    lut.render(view.camera, view.sun_dir_body, 10.0);
+    std::vector<float> hdr = lut.read_hdr();
+    EXPECT_GT(*std::max_element(hdr.begin(), hdr.end()), 1000.0f) << "the sun's disk is drawn";
+    compare(body_, model_, 128, 72, view.camera, view.sun_dir_body,
+            "the sun on pixel (" + std::to_string(pixel.x) + ", " + std::to_string(pixel.y) + ")");
+  }
   Body mars = load_body(data_dir() / "planets" / "mars.json");
   auto above_mars = view_from_place(mars.shape, {glm::radians(-4.5), glm::radians(137.4), 400e3},
                                     60.0, -18.0, 60.0, 10.0, 20.0);
   compare(mars, load_atmosphere(mars), 128, 72, above_mars.camera, above_mars.sun_dir_body,
           "Mars from 400 km");
-  EXPECT_GE(drawn, 14) << "the views outside the shell drew with the LUT";
+  EXPECT_GE(drawn, 16) << "the views outside the shell drew with the LUT";
   // With the default settings a frame this small is marched: the table
   // would cost more than the march of its 9216 pixels.
   auto technique = std::make_unique<HillaireTechnique>();
