@@ -87,6 +87,18 @@ double relative_rmse(const std::vector<float>& a, const std::vector<float>& b,
   return worst;
 }
 
+// The largest of the errors a test measured, and where.
+struct WorstError {
+  double value = 0.0;
+  std::string where;
+  void add(double e, const std::string& at) {
+    if (e > value) {
+      value = e;
+      where = at;
+    }
+  }
+};
+
 // The direction of the centre of `pixel` (from the frame's bottom left)
 // of a width x height frame of `camera`: where a test puts the sun.
 glm::dvec3 toward_pixel(const Camera& camera, glm::dvec2 pixel, int width, int height) {
@@ -203,16 +215,12 @@ TEST_F(PassReuseGLTest, AModelChangedBetweenTwoFramesShowsInTheNextFrameAsAFresh
 TEST_F(PassReuseGLTest, SkyViewReuseWithinItsStepsChangesNoImageByMoreThanATenthOfAPercent) {
   HillaireTechnique::Settings exact;
   exact.reuse_passes = false;
-  double worst = 0.0;
-  std::string worst_at;
+  WorstError worst;
   auto check = [&](const std::vector<float>& reusing, const std::vector<float>& fresh,
                    const std::string& where) {
     double e = relative_rmse(reusing, fresh);
     EXPECT_LT(e, 1e-3) << where;
-    if (e > worst) {
-      worst = e;
-      worst_at = where;
-    }
+    worst.add(e, where);
   };
   for (const Scene& scene : canonical_scenes()) {
     Body body = scene_body(scene);
@@ -243,7 +251,8 @@ TEST_F(PassReuseGLTest, SkyViewReuseWithinItsStepsChangesNoImageByMoreThanATenth
     check(reusing.read_hdr(), fresh.read_hdr(), "climb frame " + std::to_string(i));
   }
   EXPECT_EQ(sky_view_reused, 0) << "every frame of the climb moved past a step";
-  std::printf("worst relative RMSE of sky-view reuse: %.2e (%s)\n", worst, worst_at.c_str());
+  std::printf("worst relative RMSE of sky-view reuse: %.2e (%s)\n", worst.value,
+              worst.where.c_str());
 }
 
 // Looking up from the ground no surface is drawn: the froxel volume, which
@@ -377,8 +386,7 @@ TEST_F(PassReuseGLTest, FromSpaceTheSpaceViewLutDrawsWhatTheMarchDrawsToWithinAP
   HillaireTechnique::Settings march, with_lut;
   march.space_view_lut = false;
   with_lut.space_view_min_pixels = 0.0;  // these frames are small
-  double worst = 0.0;
-  std::string worst_at;
+  WorstError worst;
   int drawn = 0;
   auto compare = [&](const Body& body, const AtmosphereModel& model, int width, int height,
                      const Camera& camera, const glm::dvec3& sun, const std::string& where) {
@@ -395,10 +403,7 @@ TEST_F(PassReuseGLTest, FromSpaceTheSpaceViewLutDrawsWhatTheMarchDrawsToWithinAP
     EXPECT_TRUE(reused(lut.render(camera, sun, 10.0)).count("space_view_lut")) << where;
     double e = relative_rmse(lut.read_hdr(), marched.read_hdr(), true);
     EXPECT_LT(e, kSpaceViewRmse) << where;
-    if (e > worst) {
-      worst = e;
-      worst_at = where;
-    }
+    worst.add(e, where);
   };
   for (const Scene& scene : canonical_scenes()) {
     Body body = scene_body(scene);
@@ -442,7 +447,8 @@ TEST_F(PassReuseGLTest, FromSpaceTheSpaceViewLutDrawsWhatTheMarchDrawsToWithinAP
   small.set_body(mars, load_atmosphere(mars), std::move(technique));
   small.render(above_mars.camera, above_mars.sun_dir_body, 10.0);
   EXPECT_FALSE(hillaire->used_space_view());
-  std::printf("worst relative RMSE of the space-view LUT: %.2e (%s)\n", worst, worst_at.c_str());
+  std::printf("worst relative RMSE of the space-view LUT: %.2e (%s)\n", worst.value,
+              worst.where.c_str());
 }
 
 }  // namespace PLANET_TEST_ID
