@@ -114,8 +114,7 @@ void space_view(vec3 camera, vec3 dir, float depth, float t_surface, out vec3 lu
   float p = u_space_r * safe_sqrt(1.0 - cos_nadir * cos_nadir);
   if (cos_nadir <= 0.0 || p >= atmosphere.top_radius) return;
   float phi = atan(abs(local.y), local.x);
-  vec2 uv = vec2(space_view_texture_u(space_view_u_from_phi(phi)),
-                 space_view_v_from_p(atmosphere, p));
+  vec2 uv = vec2(space_view_u_from_phi(phi), space_view_v_from_p(atmosphere, p));
   // The air down to the surface, or for open sky down to the bottom sphere
   // (its half over the limb takes the whole ray instead).
   float b = dot(camera, dir);

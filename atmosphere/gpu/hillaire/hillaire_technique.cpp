@@ -471,28 +471,28 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
                                  {0, shaded.y + shaded.w, w, h - shaded.y - shaded.w},
                                  {0, shaded.y, shaded.x, shaded.w},
                                  {shaded.x + shaded.z, shaded.y, w - shaded.x - shaded.z, shaded.w}};
-    glEnable(GL_SCISSOR_TEST);
-    for (const Program* program : {&space_unlit_program_, &space_program_}) {
-      sky_pass_.begin(frame.target_framebuffer, w, h, *program);
+    auto begin_space = [&](const Program& program) {
+      sky_pass_.begin(frame.target_framebuffer, w, h, program);
       glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, block_.id());
       glBindTextureUnit(0, frame.depth_texture);
       glBindTextureUnit(1, frame.surface_texture);
-      glUniform3fv(program->uniform("u_camera"), 1, glm::value_ptr(glm::vec3(frame.camera_atmo)));
-      glUniformMatrix3fv(program->uniform("u_ray_from_ndc"), 1, GL_FALSE,
+      glUniform3fv(program.uniform("u_camera"), 1, glm::value_ptr(glm::vec3(frame.camera_atmo)));
+      glUniformMatrix3fv(program.uniform("u_ray_from_ndc"), 1, GL_FALSE,
                          glm::value_ptr(frame.atmo_ray_from_ndc));
-      glUniform3fv(program->uniform("u_sun_dir"), 1, glm::value_ptr(frame.sun_dir_atmo));
-      glUniform1f(program->uniform("u_near"), frame.near);
-      if (program == &space_program_) {
-        if (disk.z <= 0 || disk.w <= 0) break;
-        glScissor(disk.x, disk.y, disk.z, disk.w);
-        sky_pass_.draw();
-        break;
-      }
-      for (const glm::ivec4& band : bands) {
-        if (band.z <= 0 || band.w <= 0) continue;
-        glScissor(band.x, band.y, band.z, band.w);
-        sky_pass_.draw();
-      }
+      glUniform3fv(program.uniform("u_sun_dir"), 1, glm::value_ptr(frame.sun_dir_atmo));
+      glUniform1f(program.uniform("u_near"), frame.near);
+    };
+    auto draw_within = [&](const glm::ivec4& rect) {
+      if (rect.z <= 0 || rect.w <= 0) return;
+      glScissor(rect.x, rect.y, rect.z, rect.w);
+      sky_pass_.draw();
+    };
+    glEnable(GL_SCISSOR_TEST);
+    begin_space(space_unlit_program_);
+    for (const glm::ivec4& band : bands) draw_within(band);
+    if (disk.z > 0 && disk.w > 0) {
+      begin_space(space_program_);
+      draw_within(disk);
     }
     glDisable(GL_SCISSOR_TEST);
     timer.end();

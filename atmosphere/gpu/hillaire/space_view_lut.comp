@@ -111,17 +111,10 @@ void main() {
     // Slice k's altitude is where segment n ends, from n = upper - 1 on.
     int k = kSpaceViewLutDepth - 1 - (n - (kSpaceViewUpperSegments - 1));
     bool done = t_end >= t_closest;
-    if (k < kSpaceViewLutDepth) {
-      // Where the ray came no lower, this slice and every one below it.
-      for (int j = k; j >= (done ? 0 : k); --j) {
-        imageStore(u_scattering, ivec3(texel, j), vec4(scattering, 1.0));
-        imageStore(u_transmittance, ivec3(texel, j), vec4(throughput, 1.0));
-      }
-    } else if (done) {
-      for (int j = kSpaceViewLutDepth - 1; j >= 0; --j) {
-        imageStore(u_scattering, ivec3(texel, j), vec4(scattering, 1.0));
-        imageStore(u_transmittance, ivec3(texel, j), vec4(throughput, 1.0));
-      }
+    // Slice k, and where the ray came no lower, every slice below it.
+    for (int j = min(k, kSpaceViewLutDepth - 1); j >= (done ? 0 : k); --j) {
+      imageStore(u_scattering, ivec3(texel, j), vec4(scattering, 1.0));
+      imageStore(u_transmittance, ivec3(texel, j), vec4(throughput, 1.0));
     }
     if (done) break;
   }

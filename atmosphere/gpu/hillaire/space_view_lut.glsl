@@ -5,8 +5,9 @@
 // azimuth phi from the sun's (the sky is the same at -phi) and by its
 // distance p from the planet's centre, r_c sin(nadir angle): two numbers,
 // as the sky-view LUT's two are inside. Two tables over (phi, p):
-//  - open sky: the luminance of the whole ray through the air, with the
-//    lit ground behind it where it meets the bottom sphere;
+//  - open sky over the limb: the luminance of the whole ray through the
+//    air (open sky that meets the ground is the slices' at altitude 0 and
+//    the lit ground behind them);
 //  - the air in front of a surface: a 3D table whose slices hold the
 //    luminance and transmittance from where the ray enters the shell down
 //    to an altitude h, on a grid of altitudes (space_view_slice_altitude)
@@ -17,8 +18,8 @@
 // Rows over p: the lower half for rays that meet the bottom sphere, by
 // the angle acos(p / R_b) (linear in p at the nadir, in the half chord
 // sqrt(R_b^2 - p^2) at the horizon: the half chord alone left the nadir's
-// first row 925 km out on Earth, and the terminator seen from 40 000 km
-// 6 % off the march), the upper half for rays that pass over it, by
+// first row 925 km out on Earth, and pixels at the terminator seen from
+// 40 000 km up to 2.3 times the march's), the upper half for rays that pass over it, by
 // sqrt(p^2 - R_b^2) (Bruneton 2017's rho), which crowds them toward the
 // dense air at the limb. Columns are even over phi: crowded toward the
 // sun's azimuth (phi = pi u^2, as the sky-view LUT's), they left the far
@@ -55,17 +56,14 @@ float space_view_p_from_row(Atmosphere atmosphere, int j) {
   return sqrt(rb * rb + rho * rho);
 }
 
-float space_view_u_from_phi(float phi) { return clamp(phi / kPi, 0.0, 1.0); }
+// The texture coordinate u of azimuth phi (texel centres at 0 and pi).
+float space_view_u_from_phi(float phi) {
+  return texture_coord_from_unit_range(clamp(phi / kPi, 0.0, 1.0), float(kSpaceViewLutWidth));
+}
 
 float space_view_phi_from_column(int i) {
   float u = float(i) / float(kSpaceViewLutWidth - 1);
   return kPi * u;
-}
-
-// Texture coordinate u of column coordinate x in [0, 1] (texel centres at
-// the ends).
-float space_view_texture_u(float x) {
-  return (x * float(kSpaceViewLutWidth - 1) + 0.5) / float(kSpaceViewLutWidth);
 }
 
 // Slice k's altitude, evenly over the ground's heights `ground` (lowest,
@@ -78,6 +76,6 @@ float space_view_slice_altitude(vec2 ground, int k) {
 // The texture coordinate w of altitude h, the inverse of the above.
 float space_view_w_from_altitude(vec2 ground, float h) {
   float lo = ground.x, hi = max(ground.y, ground.x + 1.0);
-  float k = clamp((h - lo) / (hi - lo), 0.0, 1.0) * float(kSpaceViewLutDepth - 1);
-  return (k + 0.5) / float(kSpaceViewLutDepth);
+  return texture_coord_from_unit_range(clamp((h - lo) / (hi - lo), 0.0, 1.0),
+                                       float(kSpaceViewLutDepth));
 }
