@@ -1,9 +1,10 @@
 // The governor in a capture: the shipped governed ascent says what it
 // chose and why in every sidecar, draws the cheapest choice within its
 // budget by its own table or keeps the last for its dwell; at 10 frames a
-// second it switches technique on its way to 40 000 km, fades each switch so
-// that it does not pop (the measure of the Hillaire issue: a frame's second
-// difference with the switch within 10 % of the worse technique's alone),
+// second it switches on its way to 40 000 km, fades each switch so that it
+// does not pop (the measure of the Hillaire issue: a frame's second
+// difference with the switch within 10 % of the worse technique's alone,
+// a measure that sees a switch made at once between techniques that differ),
 // and a slice that starts within a fade is byte-identical to the whole run;
 // the governor's check says up front what it will render.
 #include "render/capture.h"
@@ -162,7 +163,7 @@ TEST_F(GovernorGLTest, EverySwitchOfTheAscentFadesWithoutAPop) {
     if (choices[size_t(i)] != choices[size_t(i - 1)]) switches.push_back(i);
   }
   ASSERT_GE(switches.size(), 1u);
-  double worst_hard_of_all = 0;
+  double worst_hard_of_all = 0;  // reported
   for (int s : switches) {
     const std::string before = choices[size_t(s - 1)], after = choices[size_t(s)];
     const int first = s - 3, end = std::min(frames, s + 14);
@@ -202,10 +203,32 @@ TEST_F(GovernorGLTest, EverySwitchOfTheAscentFadesWithoutAPop) {
     std::filesystem::remove_all(alone_a);
     std::filesystem::remove_all(alone_b);
   }
-  // Where the views change faster than the techniques differ (far out in
-  // space) even a switch at once hides in the flight's own motion; where
-  // they do not, the measure must see it.
-  EXPECT_GT(worst_hard_of_all, 1.3) << "the measure must see a switch made at once";
+  std::printf("worst ratio of a switch made at once: %.3f\n", worst_hard_of_all);
+
+  // The measure must see a switch made at once where the techniques differ
+  // more than the flight's motion changes the view. The table's switches
+  // on this flight are between hillaire's quality points, far out, where
+  // even one made at once hides (1.003 with the lab's sixth table): so a
+  // switch from raymarch (single scattering alone) to hillaire at once,
+  // near the ground, spliced from the two drawn alone.
+  const int at = 50;  // 5 s in, a few km up
+  FlightScript a = script, b = script;
+  for (auto* x : {&a, &b}) x->technique_named = true, x->error_budget_percent.reset();
+  a.technique = "raymarch:cheap";
+  b.technique = "hillaire";
+  auto before = capture("splice-before", a, at - 1, at + 2);
+  auto after = capture("splice-after", b, at - 1, at + 2);
+  const std::filesystem::path spliced = root_ / "spliced";
+  std::filesystem::create_directories(spliced);
+  for (int i = at - 1; i < at + 2; ++i) {
+    std::string f = fmt::format("frame_{:05d}.exr", i);
+    std::filesystem::copy_file((i < at ? before : after) / f, spliced / f);
+  }
+  const double alone = std::max(second_difference(before, at), second_difference(after, at));
+  std::printf("raymarch:cheap to hillaire at once at frame %d: %.2f of the worse alone\n", at,
+              second_difference(spliced, at) / alone);
+  EXPECT_GT(second_difference(spliced, at), 1.3 * alone)
+      << "the measure must see a switch made at once";
 }
 
 TEST(GovernorTableTest, TheShippedTableHasEveryLabSceneAndOnlyChoicesTheRegistryKnows) {
