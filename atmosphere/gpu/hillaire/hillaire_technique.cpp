@@ -147,8 +147,11 @@ HillaireTechnique::HillaireTechnique(Settings settings)
       space_program_(Program::graphics("gl/shaders/fullscreen.vert", "atmosphere/gpu/space.frag")),
       space_unlit_program_(Program::graphics("gl/shaders/fullscreen.vert",
                                              "atmosphere/gpu/space.frag", {"NO_SUN_DISK 1"})),
-      sky_unmarched_program_(
-          sky_program(settings, "gl/shaders/fullscreen.vert", {"NO_MARCH 1", "NO_SUN_DISK 1"})),
+      sky_classify_program_(sky_program(settings, "gl/shaders/fullscreen.vert", {"CLASSIFY 1"})),
+      sky_open_program_(sky_program(settings, "gl/shaders/fullscreen.vert",
+                                    {"NO_MARCH 1", "NO_SUN_DISK 1", "OPEN_SKY_ONLY 1"})),
+      sky_surface_program_(sky_program(settings, "gl/shaders/fullscreen.vert",
+                                       {"NO_MARCH 1", "NO_SUN_DISK 1", "SURFACE_ONLY 1"})),
       sky_tiles_program_(sky_program(settings, "atmosphere/gpu/hillaire/sky_tiles.vert")),
       march_tiles_program_(Program::compute("atmosphere/gpu/hillaire/sky_march_tiles.comp")),
       transmittance_lut_(make_texture_2d(GL_RGBA32F, shared::kTransmittanceLutWidth,
@@ -567,8 +570,9 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
     sky_pass_.draw();
     glDisable(GL_SCISSOR_TEST);
   } else {
-    // Every pixel without the march and the sun's disk, then the march's
-    // tiles (see hillaire_sky.frag): an 8 x 8 tile with a surface past the
+    // Every pixel without the march and the sun's disk (the open sky and
+    // the surfaces apart, each by a program that serves it alone, held by
+    // the stencil), then the march's tiles (see hillaire_sky.frag): an 8 x 8 tile with a surface past the
     // froxels' blend, listed on the GPU and drawn as one quad each; then
     // the pixels of the sun's disk. The disk's bound is that of a sphere
     // at a distance of 1 along the sun that it fills. A camera lifted onto
@@ -581,8 +585,29 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
       sky_unmarched_sun_program_ =
           sky_program(settings_, "gl/shaders/fullscreen.vert", {"NO_MARCH 1"});
     }
-    begin_sky(lifted ? *sky_unmarched_sun_program_ : sky_unmarched_program_);
-    sky_pass_.draw();
+    if (lifted) {
+      begin_sky(*sky_unmarched_sun_program_);
+      sky_pass_.draw();
+    } else {
+      // Stencil 1 under the surfaces, then each kind of pixel by its own
+      // program; the stencil was cleared for the frame.
+      begin_sky(sky_classify_program_);
+      glEnable(GL_STENCIL_TEST);
+      glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+      glStencilFunc(GL_ALWAYS, 1, 0xff);
+      glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+      sky_pass_.draw();
+      glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+      glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+      for (const auto& [program, held] : {std::pair{&sky_open_program_, 0},
+                                          std::pair{&sky_surface_program_, 1}}) {
+        begin_sky(*program);
+        glEnable(GL_STENCIL_TEST);
+        glStencilFunc(GL_EQUAL, held, 0xff);
+        sky_pass_.draw();
+      }
+      glDisable(GL_STENCIL_TEST);
+    }
     const int tiles_x = (w + kMarchTile - 1) / kMarchTile;
     const int tiles_y = (h + kMarchTile - 1) / kMarchTile;
     const size_t tiles = size_t(tiles_x) * size_t(tiles_y);

@@ -136,10 +136,13 @@ class HillaireTechnique final : public AtmosphereTechnique {
   Program transmittance_program_, multiple_scattering_program_, first_order_program_,
       next_order_program_, orders_sum_program_, forward_gain_program_, sky_view_program_,
       aerial_program_, sky_program_, space_program_, space_unlit_program_;
-  // The sky pass in two parts for frames on the LUT path alone
-  // (hillaire_sky.frag): every pixel without the march, then the whole
-  // shader over the tiles that sky_march_tiles.comp lists.
-  Program sky_unmarched_program_, sky_tiles_program_, march_tiles_program_;
+  // The sky pass in parts for frames on the LUT path alone
+  // (hillaire_sky.frag): every pixel without the march, the open sky and
+  // the surfaces apart, held by the stencil that the classifying pass
+  // sets; then the whole shader over the tiles that sky_march_tiles.comp
+  // lists.
+  Program sky_classify_program_, sky_open_program_, sky_surface_program_, sky_tiles_program_,
+      march_tiles_program_;
   // The first part with the sun's disk, for a lifted camera; compiled when
   // first drawn.
   std::optional<Program> sky_unmarched_sun_program_;
