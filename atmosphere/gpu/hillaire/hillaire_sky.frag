@@ -114,7 +114,7 @@ uniform vec2 u_ground_heights;  // the LUT's lowest and highest ground, metres
 // surface at t_surface, down to the altitude where the ray meets it. A
 // surface past the ray's closest approach to the centre (a peak beyond the
 // limb's tangent point) takes the air down to the closest approach.
-void space_view(vec3 camera, vec3 dir, float depth, float t_surface, out vec3 luminance,
+void space_view(vec3 camera, vec3 dir, bool at_surface, float t_surface, out vec3 luminance,
                 out vec3 transmittance) {
   luminance = vec3(0.0);
   transmittance = vec3(1.0);
@@ -129,17 +129,17 @@ void space_view(vec3 camera, vec3 dir, float depth, float t_surface, out vec3 lu
   // (its half over the limb takes the whole ray instead).
   float b = dot(camera, dir);
   float rb = atmosphere.bottom_radius;
-  float h = depth == 0.0 ? 0.0
+  float h = !at_surface ? 0.0
                          : (t_surface >= -b ? p - rb : length(camera + t_surface * dir) - rb);
   vec3 w = vec3(uv, space_view_w_from_altitude(u_ground_heights, h));
   luminance = texture(u_space_scattering, w).rgb;
   transmittance = texture(u_space_transmittance, w).rgb;
-  if (depth == 0.0 && p < rb) {
+  if (!at_surface && p < rb) {
     // The ground lit behind the air; no sun's disk through the planet.
     float t_ground = -b - safe_sqrt(rb * rb - p * p);
     luminance += transmittance * ground_radiance(atmosphere, camera + t_ground * dir, u_sun_dir);
     transmittance = vec3(0.0);
-  } else if (depth == 0.0) {
+  } else if (!at_surface) {
     // The whole ray, and for the sun's disk behind the limb its
     // transmittance, from where it enters the shell.
     luminance = texture(u_space_open_sky, uv).rgb;
@@ -210,13 +210,19 @@ void main() {
   vec3 dir = pixel.dir;
   vec3 camera = pixel.camera;
   const float kFar = 3.0e38;
-#ifdef OPEN_SKY_ONLY
-  // What the stencil holds here, as constants, so that no surface is read.
-  const float depth = 0.0;
+  // Whether an opaque surface lies under the pixel: as the stencil holds
+  // it where a program serves one kind of pixel alone, so that the other
+  // kind's code goes, and for the open sky no surface is read.
+#if defined(OPEN_SKY_ONLY)
+  const bool at_surface = false;
   const vec3 surface = vec3(0.0);
   float t_surface = kFar;
 #else
-  float depth = pixel.depth;
+#ifdef SURFACE_ONLY
+  const bool at_surface = true;
+#else
+  bool at_surface = pixel.depth > 0.0;
+#endif
   vec3 surface = pixel.surface;
   float t_surface = pixel.t_surface;
 #endif
@@ -226,12 +232,12 @@ void main() {
   // march through the sag made the ground near the limb 5-8 % too bright.
   // Where the ground under the pixel lies below the datum, its air goes
   // down to it (air_floor_radius). Open sky meets the bottom sphere.
-  float floor_r = depth > 0.0 ? air_floor_radius(atmosphere) : atmosphere.bottom_radius;
+  float floor_r = at_surface ? air_floor_radius(atmosphere) : atmosphere.bottom_radius;
   float t_ground_near, t_ground_far;
   bool hits_ground =
       ray_sphere(camera, dir, floor_r, t_ground_near, t_ground_far) && t_ground_near > 0.0;
-  bool open_sky = depth == 0.0 && !hits_ground;
-  if (depth > 0.0 && hits_ground) t_surface = min(t_surface, t_ground_near);
+  bool open_sky = !at_surface && !hits_ground;
+  if (at_surface && hits_ground) t_surface = min(t_surface, t_ground_near);
 
   // Froxels near, the per-pixel march beyond; blended over the last fifth
   // of the volume's range so that no edge shows on the ground.
@@ -242,12 +248,12 @@ void main() {
   // 774 ms at 400 km (now 737).
   vec3 march_luminance = vec3(0.0), march_transmittance = vec3(1.0);
 #ifndef NO_MARCH
-  if (u_lut_weight < 1.0 || (depth > 0.0 && blend > 0.0)) {
+  if (u_lut_weight < 1.0 || (at_surface && blend > 0.0)) {
 #ifdef SPACE_VIEW_LUT
-    space_view(camera, dir, depth, t_surface, march_luminance, march_transmittance);
+    space_view(camera, dir, at_surface, t_surface, march_luminance, march_transmittance);
 #else
-    float t_max = depth > 0.0 ? t_surface : (hits_ground ? t_ground_near : kFar);
-    march(camera, dir, t_max, depth == 0.0 && hits_ground, march_luminance, march_transmittance);
+    float t_max = at_surface ? t_surface : (hits_ground ? t_ground_near : kFar);
+    march(camera, dir, t_max, !at_surface && hits_ground, march_luminance, march_transmittance);
 #endif
   }
 #endif
@@ -255,11 +261,6 @@ void main() {
   vec3 lut_radiance = vec3(0.0);
 #ifndef NO_LUT
   if (u_lut_weight > 0.0) {
-#ifdef SURFACE_ONLY
-    const bool at_surface = true;  // as the stencil holds it
-#else
-    bool at_surface = depth > 0.0;
-#endif
     if (at_surface) {
       vec3 near_radiance = vec3(0.0);
       if (blend < 1.0) {

@@ -530,6 +530,29 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
       glUniform1f(program.uniform("u_shadow_loss_weight"), sky_shadow ? 1.0f : 0.0f);
     }
   };
+  // The open sky and the surfaces apart, each by a program that serves it
+  // alone (hillaire_sky.frag's OPEN_SKY_ONLY and SURFACE_ONLY), held by the
+  // stencil that a classifying pass sets to 1 under the surfaces; the
+  // stencil was cleared for the frame. bind(program) binds what the two
+  // programs read besides begin_sky's.
+  auto draw_by_kind = [&](const Program& open_sky, const Program& surfaces, auto bind) {
+    begin_sky(sky_classify_program_);
+    glEnable(GL_STENCIL_TEST);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glStencilFunc(GL_ALWAYS, 1, 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    sky_pass_.draw();
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    for (const auto& [program, held] : {std::pair{&open_sky, 0}, std::pair{&surfaces, 1}}) {
+      begin_sky(*program);
+      bind(*program);
+      glEnable(GL_STENCIL_TEST);
+      glStencilFunc(GL_EQUAL, held, 0xff);
+      sky_pass_.draw();
+    }
+    glDisable(GL_STENCIL_TEST);
+  };
   if (lut_weight_ < 1.0 || !frame.view_pruning) {
     // With pruning, a frame on the per-pixel path alone takes the shader
     // without the LUT path (hillaire_sky.frag), for grey Mie with a single
@@ -540,18 +563,30 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
     // alternate runs its sky pass ran under the brute force 5.14-5.54x
     // from 400 km (4.59-5.55x with the shadow compiled in) and 5.28-6.13x
     // from 40 000 km (5.45-5.73x).
+    if (shaded_fraction_ < 1.0) {
+      glEnable(GL_SCISSOR_TEST);
+      glScissor(shaded.x, shaded.y, shaded.z, shaded.w);
+    }
     if (space_view) {
-      if (!sky_space_view_program_) {
-        sky_space_view_program_ = sky_program(settings_, "gl/shaders/fullscreen.vert",
-                                              {"NO_LUT 1", "SPACE_VIEW_LUT 1"}, false);
+      // The open sky reads the table's whole rays and the lit ground, the
+      // surfaces its slices.
+      const char* const kinds[2] = {"OPEN_SKY_ONLY 1", "SURFACE_ONLY 1"};
+      for (size_t k = 0; k < 2; ++k) {
+        if (!sky_space_view_programs_[k]) {
+          sky_space_view_programs_[k] = sky_program(
+              settings_, "gl/shaders/fullscreen.vert", {"NO_LUT 1", "SPACE_VIEW_LUT 1", kinds[k]},
+              false);
+        }
       }
-      begin_sky(*sky_space_view_program_);
-      glBindTextureUnit(kSpaceOpenSkyUnit, space_open_sky_.id());
-      glBindTextureUnit(kSpaceOpenSkyUnit + 1, space_scattering_.id());
-      glBindTextureUnit(kSpaceOpenSkyUnit + 2, space_transmittance_.id());
-      glUniform1f(sky_space_view_program_->uniform("u_space_r"), space_r);
-      glUniform2fv(sky_space_view_program_->uniform("u_ground_heights"), 1,
-                   glm::value_ptr(frame.ground_heights));
+      draw_by_kind(*sky_space_view_programs_[0], *sky_space_view_programs_[1],
+                   [&](const Program& program) {
+                     glBindTextureUnit(kSpaceOpenSkyUnit, space_open_sky_.id());
+                     glBindTextureUnit(kSpaceOpenSkyUnit + 1, space_scattering_.id());
+                     glBindTextureUnit(kSpaceOpenSkyUnit + 2, space_transmittance_.id());
+                     glUniform1f(program.uniform("u_space_r"), space_r);
+                     glUniform2fv(program.uniform("u_ground_heights"), 1,
+                                  glm::value_ptr(frame.ground_heights));
+                   });
     } else if (frame.view_pruning && lut_weight_ == 0.0) {
       std::optional<Program>& space = sky_space_programs_[(grey_mie_ ? 1 : 0) + (shadow ? 2 : 0)];
       if (!space) {
@@ -560,20 +595,17 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
         space = sky_program(settings_, "gl/shaders/fullscreen.vert", parts, shadow);
       }
       begin_sky(*space);
+      sky_pass_.draw();
     } else {
       begin_sky(sky_program_);
+      sky_pass_.draw();
     }
-    if (shaded_fraction_ < 1.0) {
-      glEnable(GL_SCISSOR_TEST);
-      glScissor(shaded.x, shaded.y, shaded.z, shaded.w);
-    }
-    sky_pass_.draw();
     glDisable(GL_SCISSOR_TEST);
   } else {
     // Every pixel without the march and the sun's disk (the open sky and
-    // the surfaces apart, each by a program that serves it alone, held by
-    // the stencil), then the march's tiles (see hillaire_sky.frag): an 8 x 8 tile with a surface past the
-    // froxels' blend, listed on the GPU and drawn as one quad each; then
+    // the surfaces apart: draw_by_kind), then the march's tiles (see
+    // hillaire_sky.frag): an 8 x 8 tile with a surface past the froxels'
+    // blend, listed on the GPU and drawn as one quad each; then
     // the pixels of the sun's disk. The disk's bound is that of a sphere
     // at a distance of 1 along the sun that it fills. A camera lifted onto
     // the bottom sphere raises the rays under its horizon
@@ -589,24 +621,7 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
       begin_sky(*sky_unmarched_sun_program_);
       sky_pass_.draw();
     } else {
-      // Stencil 1 under the surfaces, then each kind of pixel by its own
-      // program; the stencil was cleared for the frame.
-      begin_sky(sky_classify_program_);
-      glEnable(GL_STENCIL_TEST);
-      glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-      glStencilFunc(GL_ALWAYS, 1, 0xff);
-      glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-      sky_pass_.draw();
-      glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-      glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-      for (const auto& [program, held] : {std::pair{&sky_open_program_, 0},
-                                          std::pair{&sky_surface_program_, 1}}) {
-        begin_sky(*program);
-        glEnable(GL_STENCIL_TEST);
-        glStencilFunc(GL_EQUAL, held, 0xff);
-        sky_pass_.draw();
-      }
-      glDisable(GL_STENCIL_TEST);
+      draw_by_kind(sky_open_program_, sky_surface_program_, [](const Program&) {});
     }
     const int tiles_x = (w + kMarchTile - 1) / kMarchTile;
     const int tiles_y = (h + kMarchTile - 1) / kMarchTile;

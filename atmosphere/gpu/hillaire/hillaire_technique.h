@@ -150,9 +150,10 @@ class HillaireTechnique final : public AtmosphereTechnique {
   // NO_LUT), for coloured and grey Mie (+1), with and without the
   // terrain's shadow (+2); compiled when first drawn.
   std::array<std::optional<Program>, 4> sky_space_programs_;
-  // The space-view LUT's pass and the sky pass that reads it; compiled when
-  // first drawn.
-  std::optional<Program> space_view_program_, sky_space_view_program_;
+  // The space-view LUT's pass, and the sky passes that read it for the
+  // open sky and for the surfaces; compiled when first drawn.
+  std::optional<Program> space_view_program_;
+  std::array<std::optional<Program>, 2> sky_space_view_programs_;
   bool grey_mie_ = false;  // the model's Mie scattering is the same in every channel
   Buffer march_tiles_;  // the indirect draw's command, then the tiles
   size_t march_tiles_bytes_ = 0;
