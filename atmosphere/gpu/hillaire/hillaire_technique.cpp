@@ -536,7 +536,9 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   // stencil was cleared for the frame. bind(program) binds what the two
   // programs read besides begin_sky's.
   auto draw_by_kind = [&](const Program& open_sky, const Program& surfaces, auto bind) {
-    begin_sky(sky_classify_program_);
+    // The classifying pass reads the depth alone.
+    sky_pass_.begin(frame.target_framebuffer, w, h, sky_classify_program_);
+    glBindTextureUnit(0, frame.depth_texture);
     glEnable(GL_STENCIL_TEST);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
     glStencilFunc(GL_ALWAYS, 1, 0xff);
