@@ -17,6 +17,8 @@
 # and over the far terrain (where shipped and steps12 differ), and the
 # sky pass's time in the second frame's sidecar.
 #   scripts/aerial_range.sh [OUT_DIR]     (default out/aerial_range)
+# A capture already in OUT_DIR is kept (an interrupted run goes on where it
+# stopped): give a new OUT_DIR to measure a new build.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 out="${1:-$root/out/aerial_range}"
