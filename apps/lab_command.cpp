@@ -183,7 +183,7 @@ std::filesystem::path stability_script() {
 // What the shard's cells not yet done will cost on this machine, said
 // before any of it: the ground truths to render and the techniques' draws.
 // The rates are this project's 2-core llvmpipe machine's, from a full
-// default sweep (README: the stability map).
+// default sweep (docs/stability.md#the-whole-sweep).
 double estimate_stability_seconds(const StabilityOptions& o,
                                   const std::vector<StabilityCell>& cells, int& references,
                                   int& draws) {

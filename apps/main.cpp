@@ -17,7 +17,7 @@ int main(int argc, char** argv) {
   // thread that allocates, up to eight per core: the tile worker, the
   // driver's rasterizer threads) each arena keeps its own free pages, and
   // over a long flight the resident memory crept up by a few percent while
-  // the heap in use stayed flat (`planet soak`: README, Hardening). The
+  // the heap in use stayed flat (`planet soak`: docs/testing.md#soak). The
   // threads allocate little in their hot loops: the path tracer's two
   // threads traced 1.03-1.13e5 paths/s with one arena, 0.96-1.12e5 with
   // eight (earth_sunset 8x4). MALLOC_ARENA_MAX in the environment wins.

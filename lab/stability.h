@@ -123,7 +123,7 @@ std::pair<int, int> parse_shard(const std::string& text);
 // taken out of the errors).
 PathBudget stability_reference_budget(const StabilityCell& cell);
 // What rendering that ground truth takes on this project's 2-core machine,
-// in seconds (from a full default sweep: README, the stability map).
+// in seconds (from a full default sweep: docs/stability.md#the-whole-sweep).
 double stability_reference_seconds(const StabilityCell& cell);
 
 // Classifies a technique's image of a cell against the cell's ground truth

@@ -13,7 +13,7 @@
 # suppressions, each with its reason.
 #   scripts/hardening.sh [asan|fuzz|tsan|tsan-ci]...   (default: asan fuzz tsan)
 # CI runs `fuzz` and `tsan-ci`: the whole suite under ASan does not fit
-# in its time (README: Hardening).
+# in its time (docs/testing.md#sanitizers).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"

@@ -296,7 +296,7 @@ def sentence(info, budget):
 
 
 # Why the edges lie where they do, from the order-resolved ground truth
-# and the experiments the README gives (The stability map): each shown
+# and the experiments of docs/stability.md#the-known-failures-pinned: each shown
 # under its technique's text.
 CAUSES = {
     "hillaire": "Dense air: its first order holds (0.17 / 0.04 / 0.0 % against the ground truth's "

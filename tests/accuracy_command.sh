@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `planet accuracy` as a user runs it reproduces the README's table on the
+# `planet accuracy` as a user runs it reproduces docs/accuracy.md#the-table on the
 # shipped references: raymarch and hillaire on Earth's sunset, where the
 # ground's light is mostly the sky's (a frame that loses it is 22.8 %
 # off in red for raymarch, not 22.1 %, and 6.2 % for hillaire, not 2.1 %).

@@ -1,14 +1,19 @@
 #!/usr/bin/env bash
-# The README's examples run as written: every `build/planet ...` line of
-# its code blocks that names no placeholder (FILE, DIR, [options]), but the
-# window (fly), the long benchmarks and the lab's whole sweeps, runs from a
-# scratch folder with the shipped data, exits 0 within two minutes and
-# prints something.
+# The examples of the README and of the book run as written: every
+# `build/planet ...` line of the code blocks of README.md and docs/**/*.md
+# that names no placeholder (FILE, DIR, [options]), but the window (fly),
+# the long benchmarks and the lab's whole sweeps, runs from a scratch
+# folder with the shipped data, exits 0 within two minutes and prints
+# something. A line that more than one page gives runs once, in the order
+# of README.md and then the book's pages by name, all in the one folder
+# (so that a page's shares can be merged by its next line). And the README
+# names the test command CI runs (.ci/run), as its front door promises.
 set -uo pipefail
 planet="$1"; source="$2"
 work="$(mktemp -d /tmp/planet-readme.XXXXXX)"
 trap 'rm -rf "$work"' EXIT
 export XDG_CACHE_HOME="$work/cache"  # a reference rendered here stays here
+ln -s "$source/data" "$work/data"     # the shipped data where the examples name it, as in a clone
 failed=0; ran=0
 while IFS= read -r line; do
   case "$line" in *" fly"*|*" bench"*) continue ;; esac
@@ -29,10 +34,13 @@ while IFS= read -r line; do
   else
     echo "ok: $line"
   fi
-done < <(awk '/^```/ { block = !block; next }
+done < <(cd "$source" && awk 'FNR == 1 { block = 0 }
+              /^```/ { block = !block; next }
               block && /^(PLANET_CACHE_DIR=data )?build\/planet / {
                 line = $0
                 while (line ~ /\\$/) { sub(/\\$/, "", line); getline more; line = line more }
-                print line }' "$source/README.md")
+                if (!seen[line]++) print line }' README.md $(find docs -name '*.md' | LC_ALL=C sort))
+grep -q '^\./build\.sh test ' "$source/README.md" ||
+  { echo "FAIL: README.md does not give CI's test command, ./build.sh test"; failed=1; }
 [ "$ran" -ge 6 ] || { echo "FAIL: only $ran examples found"; failed=1; }
 exit $failed

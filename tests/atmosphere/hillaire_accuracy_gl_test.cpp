@@ -41,7 +41,7 @@ struct AccuracyCase {
   // today's measured error plus a fifth, so that a regression fails. The
   // goals (2 % noon and 400 km, 5 % sunset, twilight and Mars) hold but
   // for Mars sunset (the multiply scattered glow of thick dust round a low
-  // sun; see the README).
+  // sun; see docs/accuracy.md#mars-sunset).
   double max_relative_rmse;
 };
 

@@ -302,7 +302,7 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   // Not out to the horizon, though the march past the froxels is most of
   // the sky's time from a few km up: spread that far, the froxels' slices
   // left the surfaces up to 6 % off the converged march, against 2 %
-  // (scripts/aerial_range.sh; README, "Speed").
+  // (scripts/aerial_range.sh; docs/techniques/hillaire.md#the-aerial-perspectives-range).
   aerial_range_ = std::max(settings_.aerial_range, 4.0 * altitude);
   const glm::dvec3 sun(frame.sun_dir_atmo);
   const glm::dmat3 local = local_from_atmo(camera, sun);
