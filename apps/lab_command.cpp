@@ -1,6 +1,7 @@
 // planet lab run: the sweep of techniques x quality points x canonical
 // scenes (lab/sweep.h), its tables, and the charts and report drawn from
 // them by scripts/lab_report.py.
+#include "apps/cli_options.h"
 #include "apps/commands.h"
 #include "apps/reference_progress.h"
 #include "atmosphere/gpu/bruneton/bruneton_cache.h"
@@ -376,16 +377,16 @@ void add_lab_command(CLI::App& app) {
   run->add_option("--frames", args->options.frames, "Timed frames per cell, after one untimed")
       ->capture_default_str();
   run->add_option("--time-width", args->options.time_width, "Width the cells are timed at")
-      ->check(CLI::Range(8, 8192))
+      ->check(within(8, 8192))
       ->capture_default_str();
   run->add_option("--time-height", args->options.time_height, "Height the cells are timed at")
-      ->check(CLI::Range(8, 8192))
+      ->check(within(8, 8192))
       ->capture_default_str();
   run->add_option("--width", args->options.width, "Width the cells are measured at")
-      ->check(CLI::Range(4, 4096))
+      ->check(within(4, 4096))
       ->capture_default_str();
   run->add_option("--height", args->options.height, "Height the cells are measured at")
-      ->check(CLI::Range(2, 4096))
+      ->check(within(2, 4096))
       ->capture_default_str();
   run->add_option("--spp", args->paths,
                   "References' paths per pixel (default: the best cached or shipped, else 8192)");
@@ -415,7 +416,9 @@ void add_lab_command(CLI::App& app) {
       "OUT/report.html.");
   stability->add_option("--techniques", st->options.techniques,
                         "Techniques (default: every one in `planet techniques`)");
-  stability->add_option("--bodies", st->options.bodies, "Body presets (default: earth mars asteroid)");
+  stability->add_option(
+      "--bodies", st->options.bodies,
+      fmt::format("Body presets (default: {})", fmt::join(stability_bodies(), ", ")));
   stability->add_option("--cells", st->options.cells, "Only these cells, by name (--list)");
   stability->add_flag("--list", st->list, "List the map's cells and their slices, and stop");
   stability->add_option("--out", st->out, "Output folder")->capture_default_str();
@@ -426,10 +429,10 @@ void add_lab_command(CLI::App& app) {
                         "Seconds a technique may take over a cell before it counts as failed")
       ->capture_default_str();
   stability->add_option("--width", st->options.width, "Width of each cell's view")
-      ->check(CLI::Range(4, 512))
+      ->check(within(4, 512))
       ->capture_default_str();
   stability->add_option("--height", st->options.height, "Height of each cell's view")
-      ->check(CLI::Range(2, 256))
+      ->check(within(2, 256))
       ->capture_default_str();
   stability->add_option("--shard", st->shard, "This machine's part K of N, by cell")
       ->capture_default_str();

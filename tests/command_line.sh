@@ -2,6 +2,9 @@
 # The command line as a newcomer reads it, in parts:
 #   help    `--help` is short and says where the techniques are listed;
 #           `planet techniques` holds their table; `--version` answers.
+#   places  every list of bodies is the one in data/planets; longitudes
+#           run -180 to 360 east and are named east and west; a range
+#           error writes its bounds as a person would.
 #   command_line.sh PLANET PART WORK   (PLANET_ROOT: the source tree)
 # Nothing here starts GL: each case is help, a probe, or bad input
 # refused before any work.
@@ -46,7 +49,48 @@ help)
   [ "$(cat "$work/out.txt")" = "planet $version" ] ||
     fail "planet --version said '$(cat "$work/out.txt")', not 'planet $version'"
   ;;
+places)
+  # The bodies a user is offered are the files in data/planets, whatever
+  # they are: here a root whose planets are the Moon and a made-up one.
+  root="$work/root"; mkdir -p "$root/data/planets"
+  cp "$PLANET_ROOT/data/planets/moon.json" "$root/data/planets/"
+  sed 's/"name": "Moon"/"name": "Selene"/' "$PLANET_ROOT/data/planets/moon.json" \
+    > "$root/data/planets/selene.json"
+  for command in "probe sun" "probe ground" "probe transmittance" "probe sky" "probe oneil-fit" \
+                 fly soak; do
+    # shellcheck disable=SC2086
+    succeed env PLANET_ROOT="$root" "$planet" $command --help
+    grep -q "(moon, selene)" "$work/out.txt" ||
+      fail "planet $command --help does not list the bodies of data/planets (moon, selene):
+$(grep -i "body\|bodies" "$work/out.txt")"
+    grep -q "asteroid" "$work/out.txt" && fail "planet $command --help lists a body not in data/planets"
+  done
+  expect "vulcan: no such body file, and no body of that name in $root/data/planets (moon, selene)" \
+    env PLANET_ROOT="$root" "$planet" probe ground --planet vulcan --lat 0 --lon 0
+  # Mars' maps count longitudes 0-360 east: Jezero's 77.5 E, Olympus
+  # Mons' 226.2 E (133.8 W).
+  succeed "$planet" probe ground --planet mars --lat 18.65 --lon 226.2
+  grep -q "lon 226.200000 deg E (133.800000 deg W)" "$work/out.txt" ||
+    fail "probe ground does not name 226.2 E as 133.8 W: $(head -1 "$work/out.txt")"
+  succeed "$planet" probe sun --planet mars --lat 18.65 --lon 226.2 --time 2026-06-21T12:00:00Z
+  grep -q "lon 226.2000 deg E (133.8000 deg W)" "$work/out.txt" ||
+    fail "probe sun does not name 226.2 E as 133.8 W: $(grep place "$work/out.txt")"
+  succeed "$planet" probe sun --planet moon --lat 0 --lon -70 --time 2026-06-21T12:00:00Z
+  grep -q "lon 70.0000 deg W" "$work/out.txt" ||
+    fail "probe sun does not name -70 as 70 W: $(grep place "$work/out.txt")"
+  expect "--lon: 361 is not a longitude (-180 to 360 deg east" \
+    "$planet" probe ground --planet mars --lat 0 --lon 361
+  expect "--lat: 95 is not a latitude (-90 to 90 deg)" \
+    "$planet" probe ground --planet mars --lat 95 --lon 0
+  # Bounds as written, not as std::to_string writes a double.
+  expect "--zenith: Value 181 not in range 0 to 180" \
+    "$planet" probe transmittance --planet earth --zenith 181
+  expect "--height: Value -1 not in range 0 to 1000000000 (" \
+    "$planet" probe sky --planet earth --height -1
+  expect "--terrain-cache-mib: Value 4 not in range 8 to 65536" "$planet" soak --terrain-cache-mib 4
+  expect "--exposure: Value 0 is not above 0" "$planet" fly --exposure 0
+  ;;
 *)
-  echo "usage: command_line.sh PLANET help WORK" >&2; exit 2 ;;
+  echo "usage: command_line.sh PLANET help|places WORK" >&2; exit 2 ;;
 esac
 exit $failed
