@@ -126,7 +126,8 @@ void add_accuracy_command(CLI::App& app) {
       "accuracy", "Measure an atmosphere technique against the path-traced ground truth");
   cmd->add_option("--technique", args->technique, "Atmosphere technique, NAME[:KEY=VALUE,...]")
       ->capture_default_str();
-  cmd->add_option("--scene", args->scenes, "Canonical scenes (default: all with an atmosphere)");
+  add_list_option(*cmd, "--scene", args->scenes,
+                  "Canonical scenes (default: all with an atmosphere)");
   cmd->add_option("--spp", args->paths,
                   fmt::format("Reference paths per pixel, in all or per channel (R,G,B) (default: "
                               "the cached reference of the view with the most paths, else {})",

@@ -35,7 +35,9 @@ std::unique_ptr<CLI::App> make_cli() {
   // Each command inherits this footer unless it sets its own. The table of
   // techniques is 60 lines: under every --help it drowned the options.
   app->footer(
-      "`planet techniques` lists the atmosphere techniques and their quality parameters.");
+      "`planet techniques` lists the atmosphere techniques and their quality parameters. A list "
+      "option takes its items with commas or spaces between them (--bodies earth,mars or "
+      "--bodies earth mars).");
   add_capture_command(*app);
   add_bench_command(*app);
   add_accuracy_command(*app);

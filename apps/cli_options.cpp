@@ -5,6 +5,28 @@
 
 namespace planet::apps {
 
+std::vector<std::string> split_list(const std::vector<std::string>& words) {
+  std::vector<std::string> items;
+  for (const std::string& word : words) {
+    bool first = true;
+    for (size_t start = 0; start <= word.size(); first = false) {
+      size_t end = word.find(',', start);
+      if (end == std::string::npos) end = word.size();
+      std::string piece = word.substr(start, end - start);
+      start = end + 1;
+      // A technique's next setting, not an item of its own; only within
+      // one word, where the comma before it was written.
+      bool setting = piece.find('=') != std::string::npos && piece.find(':') == std::string::npos;
+      if (setting && !first && !items.empty()) {
+        items.back() += "," + piece;
+      } else if (!piece.empty()) {
+        items.push_back(piece);
+      }
+    }
+  }
+  return items;
+}
+
 CLI::Validator positive() {
   return CLI::Validator(
       [](std::string& input) {

@@ -367,11 +367,11 @@ void add_lab_command(CLI::App& app) {
       "(Ctrl-C) goes on where it stopped, and never times a finished cell again unless --redo. "
       "Writes OUT/results.json, OUT/results.csv, and with python3-matplotlib the charts "
       "(OUT/pareto_*.png, .svg) and OUT/report.html.");
-  run->add_option("--techniques", args->options.techniques,
+  add_list_option(*run, "--techniques", args->options.techniques,
                   "Techniques (default: every one in `planet techniques`)");
-  run->add_option("--quality", args->options.qualities,
+  add_list_option(*run, "--quality", args->options.qualities,
                   "Quality points (default: each technique's every one, `planet techniques`)");
-  run->add_option("--scenes", args->options.scenes,
+  add_list_option(*run, "--scenes", args->options.scenes,
                   "Canonical scenes (default: every one with an atmosphere)");
   run->add_option("--out", args->out, "Output folder")->capture_default_str();
   run->add_option("--frames", args->options.frames, "Timed frames per cell, after one untimed")
@@ -414,12 +414,11 @@ void add_lab_command(CLI::App& app) {
       "tables and maps gather every shard's results found in OUT. Writes OUT/stability.json, "
       "OUT/stability.csv, and with python3-matplotlib the maps, the line plots and "
       "OUT/report.html.");
-  stability->add_option("--techniques", st->options.techniques,
-                        "Techniques (default: every one in `planet techniques`)");
-  stability->add_option(
-      "--bodies", st->options.bodies,
-      fmt::format("Body presets (default: {})", fmt::join(stability_bodies(), ", ")));
-  stability->add_option("--cells", st->options.cells, "Only these cells, by name (--list)");
+  add_list_option(*stability, "--techniques", st->options.techniques,
+                  "Techniques (default: every one in `planet techniques`)");
+  add_list_option(*stability, "--bodies", st->options.bodies,
+                  fmt::format("Body presets (default: {})", fmt::join(stability_bodies(), ", ")));
+  add_list_option(*stability, "--cells", st->options.cells, "Only these cells, by name (--list)");
   stability->add_flag("--list", st->list, "List the map's cells and their slices, and stop");
   stability->add_option("--out", st->out, "Output folder")->capture_default_str();
   stability->add_option("--budget", st->options.budget_percent,
@@ -449,7 +448,8 @@ void add_lab_command(CLI::App& app) {
       "views held out of the table (the stability map's one-axis cells, 126 views whose 16x8 "
       "ground truths are rendered once and cached: some 9 min from nothing), its choice's "
       "error. Writes OUT/governor.json and .csv.");
-  governor->add_option("--budget", gv->options.budgets, "Error budgets, percent (default 2 5 10)");
+  add_list_option(*governor, "--budget", gv->options.budgets,
+                  "Error budgets, percent (default 2, 5, 10)");
   governor->add_option("--error-model", gv->error_model,
                        "The governor's table (default data/lab/error_model.json)");
   governor->add_option("--frames-per-model", gv->options.frames_per_model,

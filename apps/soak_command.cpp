@@ -104,10 +104,8 @@ void add_soak_command(CLI::App& app) {
       ->check(within(1, 100000));
   cmd->add_option("--width", o.width, "Frame width")->check(within(8, 4096));
   cmd->add_option("--height", o.height, "Frame height")->check(within(8, 4096));
-  cmd->add_option("--bodies", o.bodies, body_option_help("Bodies in turn, names or files"))
-      ->delimiter(',');
-  cmd->add_option("--techniques", o.techniques, "Techniques in turn on each body with air")
-      ->delimiter(',');
+  add_list_option(*cmd, "--bodies", o.bodies, body_option_help("Bodies in turn, names or files"));
+  add_list_option(*cmd, "--techniques", o.techniques, "Techniques in turn on each body with air");
   cmd->add_option("--terrain-cache-mib", args->terrain_cache_mib,
                   "Terrain tiles kept resident, MiB")
       ->check(within(8.0, 65536.0));

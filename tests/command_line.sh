@@ -1,10 +1,13 @@
 #!/usr/bin/env bash
-# The command line as a newcomer reads it, in parts:
+# The command line as a newcomer reads it, in three parts:
 #   help    `--help` is short and says where the techniques are listed;
 #           `planet techniques` holds their table; `--version` answers.
 #   places  every list of bodies is the one in data/planets; longitudes
 #           run -180 to 360 east and are named east and west; a range
 #           error writes its bounds as a person would.
+#   lists   every list option takes its items with commas, with spaces,
+#           or with the option repeated, and a technique's own settings
+#           (which hold commas) stay with it.
 #   command_line.sh PLANET PART WORK   (PLANET_ROOT: the source tree)
 # Nothing here starts GL: each case is help, a probe, or bad input
 # refused before any work.
@@ -90,7 +93,42 @@ $(grep -i "body\|bodies" "$work/out.txt")"
   expect "--terrain-cache-mib: Value 4 not in range 8 to 65536" "$planet" soak --terrain-cache-mib 4
   expect "--exposure: Value 0 is not above 0" "$planet" fly --exposure 0
   ;;
+lists)
+  # Each list three ways; the error names the one bad item, which shows
+  # that the items before it were taken apart and accepted.
+  for form in "raymarch,nope" "raymarch nope" "raymarch --techniques nope"; do
+    # shellcheck disable=SC2086
+    expect "unknown atmosphere technique 'nope'" \
+      "$planet" lab run --techniques $form --no-report --out "$work/lab"
+  done
+  [ -e "$work/lab" ] && fail "a refused lab run left its folder"
+  expect "'nope' is not a canonical scene" \
+    "$planet" lab run --techniques raymarch,hillaire --scenes earth_noon,nope --no-report \
+    --out "$work/lab"
+  expect "lab run --quality: no technique of the sweep has a quality point 'nope'" \
+    "$planet" lab run --techniques raymarch,hillaire --quality default,nope --no-report \
+    --out "$work/lab"
+  expect "lab stability --bodies: 'venus' is not one of earth, mars, asteroid" \
+    "$planet" lab stability --bodies earth,venus --list
+  expect "unknown atmosphere technique 'nope'" \
+    "$planet" lab stability --techniques hillaire,nope --list
+  expect "lab governor --budget" \
+    "$planet" lab governor --budget 2,-1 --canonical-only --out "$work/governor"
+  expect "--budget: 'x' is not a FLOAT" \
+    "$planet" lab governor --budget 2,x --canonical-only --out "$work/governor"
+  expect "'nope' is not a canonical scene" "$planet" accuracy --scene earth_noon,nope
+  expect "unknown atmosphere technique 'nope'" \
+    "$planet" lab measured --techniques raymarch,nope --no-report --out "$work/measured"
+  expect "vulcan: no such body file" "$planet" soak --bodies earth,vulcan
+  expect "vulcan: no such body file" "$planet" soak --bodies earth vulcan
+  # A technique's settings hold commas of their own: two techniques here.
+  expect "unknown atmosphere technique 'nope'" \
+    "$planet" soak --techniques raymarch:view_steps=8,light_steps=4,nope
+  expect "raymarch: view_steps=0 is outside 1 to 512" \
+    "$planet" soak --techniques hillaire,raymarch:light_steps=4,view_steps=0
+  expect "--techniques: names nothing" "$planet" soak --techniques ,
+  ;;
 *)
-  echo "usage: command_line.sh PLANET help|places WORK" >&2; exit 2 ;;
+  echo "usage: command_line.sh PLANET help|places|lists WORK" >&2; exit 2 ;;
 esac
 exit $failed
