@@ -4,6 +4,7 @@
 // out of the error (with its 95 % interval), the
 // relative RMSE over the open sky alone, and the mean signed error (bias);
 // the images are written where a person can look at them.
+#include "apps/cli_options.h"
 #include "apps/commands.h"
 #include "apps/reference_progress.h"
 #include "atmosphere/gpu/registry.h"
@@ -125,16 +126,17 @@ void add_accuracy_command(CLI::App& app) {
       "accuracy", "Measure an atmosphere technique against the path-traced ground truth");
   cmd->add_option("--technique", args->technique, "Atmosphere technique, NAME[:KEY=VALUE,...]")
       ->capture_default_str();
-  cmd->add_option("--scene", args->scenes, "Canonical scenes (default: all with an atmosphere)");
+  add_list_option(*cmd, "--scene", args->scenes,
+                  "Canonical scenes (default: all with an atmosphere)");
   cmd->add_option("--spp", args->paths,
                   fmt::format("Reference paths per pixel, in all or per channel (R,G,B) (default: "
                               "the cached reference of the view with the most paths, else {})",
                               kDefaultPaths));
   cmd->add_option("--width", args->width, "Image width")
-      ->check(CLI::Range(1, 4096))
+      ->check(within(1, 4096))
       ->capture_default_str();
   cmd->add_option("--height", args->height, "Image height")
-      ->check(CLI::Range(1, 4096))
+      ->check(within(1, 4096))
       ->capture_default_str();
   cmd->add_option("--max-order", args->max_order,
                   "Measure against the ground truth's first N orders of scattering alone (1: "

@@ -1,8 +1,8 @@
 #include "apps/cli.h"
 
 #include "apps/commands.h"
-#include "atmosphere/gpu/registry.h"
 #include "core/error.h"
+#include "core/version.h"
 
 #include <fmt/format.h>
 #include <unistd.h>
@@ -31,8 +31,13 @@ void report(const std::exception& e) {
 std::unique_ptr<CLI::App> make_cli() {
   auto app = std::make_unique<CLI::App>("planet: a planetary flight and space simulator");
   app->require_subcommand(1);
-  // The techniques with their quality parameters, under --help.
-  app->footer(describe_techniques());
+  app->set_version_flag("--version", "planet " + planet_version(), "Print the version and exit");
+  // Each command inherits this footer unless it sets its own. The table of
+  // techniques is 60 lines: under every --help it drowned the options.
+  app->footer(
+      "`planet techniques` lists the atmosphere techniques and their quality parameters. A list "
+      "option takes its items with commas or spaces between them (--bodies earth,mars or "
+      "--bodies earth mars).");
   add_capture_command(*app);
   add_bench_command(*app);
   add_accuracy_command(*app);

@@ -1,5 +1,6 @@
 // planet cluster slurm|kubernetes: a reference or capture split into
 // shares by a cluster's own scheduler, written as a job the user submits.
+#include "apps/cli_options.h"
 #include "apps/commands.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
@@ -65,9 +66,8 @@ void run_cluster(const ClusterArgs& args, Scheduler scheduler,
 void add_common(CLI::App* cmd, const std::shared_ptr<ClusterArgs>& args) {
   // The command to split comes as extras: its own options are its own.
   cmd->allow_extras();
-  cmd->add_option("--tasks", args->tasks, "Shares (tasks), N; required")
-      ->check(CLI::Range(1, 65536));
-  cmd->add_option("--cpus", args->cpus, "Cores per task (default 1)")->check(CLI::Range(1, 4096));
+  cmd->add_option("--tasks", args->tasks, "Shares (tasks), N; required")->check(within(1, 65536));
+  cmd->add_option("--cpus", args->cpus, "Cores per task (default 1)")->check(within(1, 4096));
   cmd->add_option("--script", args->script, "Write the job here (default: standard output)");
 }
 

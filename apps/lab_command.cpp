@@ -1,6 +1,7 @@
 // planet lab run: the sweep of techniques x quality points x canonical
 // scenes (lab/sweep.h), its tables, and the charts and report drawn from
 // them by scripts/lab_report.py.
+#include "apps/cli_options.h"
 #include "apps/commands.h"
 #include "apps/reference_progress.h"
 #include "atmosphere/gpu/bruneton/bruneton_cache.h"
@@ -366,26 +367,26 @@ void add_lab_command(CLI::App& app) {
       "(Ctrl-C) goes on where it stopped, and never times a finished cell again unless --redo. "
       "Writes OUT/results.json, OUT/results.csv, and with python3-matplotlib the charts "
       "(OUT/pareto_*.png, .svg) and OUT/report.html.");
-  run->add_option("--techniques", args->options.techniques,
+  add_list_option(*run, "--techniques", args->options.techniques,
                   "Techniques (default: every one in `planet techniques`)");
-  run->add_option("--quality", args->options.qualities,
+  add_list_option(*run, "--quality", args->options.qualities,
                   "Quality points (default: each technique's every one, `planet techniques`)");
-  run->add_option("--scenes", args->options.scenes,
+  add_list_option(*run, "--scenes", args->options.scenes,
                   "Canonical scenes (default: every one with an atmosphere)");
   run->add_option("--out", args->out, "Output folder")->capture_default_str();
   run->add_option("--frames", args->options.frames, "Timed frames per cell, after one untimed")
       ->capture_default_str();
   run->add_option("--time-width", args->options.time_width, "Width the cells are timed at")
-      ->check(CLI::Range(8, 8192))
+      ->check(within(8, 8192))
       ->capture_default_str();
   run->add_option("--time-height", args->options.time_height, "Height the cells are timed at")
-      ->check(CLI::Range(8, 8192))
+      ->check(within(8, 8192))
       ->capture_default_str();
   run->add_option("--width", args->options.width, "Width the cells are measured at")
-      ->check(CLI::Range(4, 4096))
+      ->check(within(4, 4096))
       ->capture_default_str();
   run->add_option("--height", args->options.height, "Height the cells are measured at")
-      ->check(CLI::Range(2, 4096))
+      ->check(within(2, 4096))
       ->capture_default_str();
   run->add_option("--spp", args->paths,
                   "References' paths per pixel (default: the best cached or shipped, else 8192)");
@@ -413,10 +414,11 @@ void add_lab_command(CLI::App& app) {
       "tables and maps gather every shard's results found in OUT. Writes OUT/stability.json, "
       "OUT/stability.csv, and with python3-matplotlib the maps, the line plots and "
       "OUT/report.html.");
-  stability->add_option("--techniques", st->options.techniques,
-                        "Techniques (default: every one in `planet techniques`)");
-  stability->add_option("--bodies", st->options.bodies, "Body presets (default: earth mars asteroid)");
-  stability->add_option("--cells", st->options.cells, "Only these cells, by name (--list)");
+  add_list_option(*stability, "--techniques", st->options.techniques,
+                  "Techniques (default: every one in `planet techniques`)");
+  add_list_option(*stability, "--bodies", st->options.bodies,
+                  fmt::format("Body presets (default: {})", fmt::join(stability_bodies(), ", ")));
+  add_list_option(*stability, "--cells", st->options.cells, "Only these cells, by name (--list)");
   stability->add_flag("--list", st->list, "List the map's cells and their slices, and stop");
   stability->add_option("--out", st->out, "Output folder")->capture_default_str();
   stability->add_option("--budget", st->options.budget_percent,
@@ -426,10 +428,10 @@ void add_lab_command(CLI::App& app) {
                         "Seconds a technique may take over a cell before it counts as failed")
       ->capture_default_str();
   stability->add_option("--width", st->options.width, "Width of each cell's view")
-      ->check(CLI::Range(4, 512))
+      ->check(within(4, 512))
       ->capture_default_str();
   stability->add_option("--height", st->options.height, "Height of each cell's view")
-      ->check(CLI::Range(2, 256))
+      ->check(within(2, 256))
       ->capture_default_str();
   stability->add_option("--shard", st->shard, "This machine's part K of N, by cell")
       ->capture_default_str();
@@ -446,7 +448,8 @@ void add_lab_command(CLI::App& app) {
       "views held out of the table (the stability map's one-axis cells, 126 views whose 16x8 "
       "ground truths are rendered once and cached: some 9 min from nothing), its choice's "
       "error. Writes OUT/governor.json and .csv.");
-  governor->add_option("--budget", gv->options.budgets, "Error budgets, percent (default 2 5 10)");
+  add_list_option(*governor, "--budget", gv->options.budgets,
+                  "Error budgets, percent (default 2, 5, 10)");
   governor->add_option("--error-model", gv->error_model,
                        "The governor's table (default data/lab/error_model.json)");
   governor->add_option("--frames-per-model", gv->options.frames_per_model,

@@ -1,6 +1,7 @@
 // planet lab measured: the ground truth and every technique against a
 // measured day's sky (lab/measured_run.h), and the report drawn from it by
 // scripts/measured_report.py.
+#include "apps/cli_options.h"
 #include "apps/commands.h"
 #include "core/data_paths.h"
 #include "core/error.h"
@@ -101,10 +102,12 @@ void add_lab_measured_command(CLI::App& lab) {
                   "A day's folder of capture folders (default data/measured/kider-2013-05-27)");
   cmd->add_option("--body", args->options.body, "The body preset that models the day")
       ->capture_default_str();
-  cmd->add_option("--techniques", args->options.techniques,
-                  "Techniques (NAME or NAME:KEY=VALUE,...; default: every one at its default; none: "
-                  "the ground truth alone)");
-  cmd->add_option("--captures", args->options.captures, "Captures by local time, HH:MM (default all)");
+  add_list_option(
+      *cmd, "--techniques", args->options.techniques,
+      "Techniques (NAME or NAME:KEY=VALUE,...; default: every one at its default; none: "
+      "the ground truth alone)");
+  add_list_option(*cmd, "--captures", args->options.captures,
+                  "Captures by local time, HH:MM (default all)");
   cmd->add_option("--directions", args->options.directions,
                   "Directions per capture, spread over the scan with the zenith (1-81)")
       ->capture_default_str();

@@ -1,5 +1,6 @@
 // planet probe transmittance | sky: the atmosphere model's quantities at a
 // height above the bottom of the atmosphere, with their units.
+#include "apps/cli_options.h"
 #include "apps/commands.h"
 #include "atmosphere/math/shared_math.h"
 #include "atmosphere/reference/path_tracer.h"
@@ -115,26 +116,26 @@ void add_probe_atmosphere_commands(CLI::App& probe) {
   auto args = std::make_shared<ProbeArgs>();
   CLI::App* t = probe.add_subcommand("transmittance",
                                      "Transmittance to the top of the atmosphere per wavelength");
-  t->add_option("--planet", args->planet, "Body name or file")->capture_default_str();
+  t->add_option("--planet", args->planet, body_option_help())->capture_default_str();
   t->add_option("--height", args->height_m, "Metres above the bottom of the atmosphere")
-      ->check(CLI::Range(0.0, 1e9));
+      ->check(within(0.0, 1e9));
   t->add_option("--zenith", args->zenith_deg, "View zenith angle, degrees")
-      ->check(CLI::Range(0.0, 180.0));
+      ->check(within(0.0, 180.0));
   t->add_option("--mode", args->mode, "rgb or spectral")->capture_default_str();
   t->callback([args] { run_transmittance(*args); });
 
   CLI::App* s = probe.add_subcommand("sky", "Sky radiance in one direction, from the reference");
-  s->add_option("--planet", args->planet, "Body name or file")->capture_default_str();
+  s->add_option("--planet", args->planet, body_option_help())->capture_default_str();
   s->add_option("--height", args->height_m, "Metres above the bottom of the atmosphere")
-      ->check(CLI::Range(0.0, 1e9));
+      ->check(within(0.0, 1e9));
   s->add_option("--view-zenith", args->view_zenith_deg, "View zenith angle, degrees")
-      ->check(CLI::Range(0.0, 180.0));
+      ->check(within(0.0, 180.0));
   s->add_option("--view-azimuth", args->view_azimuth_deg, "View azimuth from the sun's, degrees")
-      ->check(CLI::Range(-360.0, 360.0));
+      ->check(within(-360.0, 360.0));
   s->add_option("--sun-zenith", args->sun_zenith_deg, "Sun zenith angle, degrees")
-      ->check(CLI::Range(0.0, 180.0));
+      ->check(within(0.0, 180.0));
   s->add_option("--paths", args->paths, "Paths per wavelength")
-      ->check(CLI::Range(100, 100000000))
+      ->check(within(100, 100000000))
       ->capture_default_str();
   s->add_option("--mode", args->mode, "rgb or spectral")->capture_default_str();
   s->add_option("--max-order", args->max_order,

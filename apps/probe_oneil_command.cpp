@@ -1,6 +1,7 @@
 // planet probe oneil-fit: the oneil technique's scale functions for a body,
 // fitted to its Rayleigh and Mie scale heights, with their worst errors of
 // optical depth, beside the chapter's fixed polynomial's.
+#include "apps/cli_options.h"
 #include "apps/commands.h"
 #include "atmosphere/math/oneil_math.h"
 #include "sim/body.h"
@@ -71,8 +72,7 @@ void add_probe_oneil_command(CLI::App& probe) {
   auto args = std::make_shared<ProbeOneilArgs>();
   CLI::App* cmd = probe.add_subcommand(
       "oneil-fit", "The oneil technique's scale functions for a body, and their errors");
-  cmd->add_option("--planet,--body", args->planet, "Body name or file (earth, mars, asteroid)")
-      ->capture_default_str();
+  cmd->add_option("--planet,--body", args->planet, body_option_help())->capture_default_str();
   cmd->callback([args] { run(*args); });
 }
 

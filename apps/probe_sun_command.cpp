@@ -1,4 +1,5 @@
 // planet probe sun: where the sun stands over a place at a UTC instant.
+#include "apps/cli_options.h"
 #include "apps/commands.h"
 #include "core/error.h"
 #include "sim/body.h"
@@ -30,12 +31,8 @@ std::string clock_text(double hours) {
 }
 
 void run(const ProbeSunArgs& args) {
-  if (!(args.lat_deg >= -90.0 && args.lat_deg <= 90.0)) {
-    throw InputError(fmt::format("--lat: {} is not a latitude (-90 to 90 deg)", args.lat_deg));
-  }
-  if (!(args.lon_deg >= -180.0 && args.lon_deg <= 360.0)) {
-    throw InputError(fmt::format("--lon: {} is not a longitude (-180 to 360 deg)", args.lon_deg));
-  }
+  checked_latitude_deg(args.lat_deg, "--lat");
+  checked_longitude_deg(args.lon_deg, "--lon");
   Body body = load_body(find_body_file(args.planet));
   UtcSeconds utc = parse_utc(args.time, "--time");
   if (!body.ephemeris.available()) {
@@ -46,7 +43,8 @@ void run(const ProbeSunArgs& args) {
   HorizonAngles a = horizon_angles(sun, lat, lon);
   std::printf("body       %s (%s ephemeris)\n", body.name.c_str(), body.ephemeris.name().c_str());
   std::printf("time       %s\n", format_utc(utc).c_str());
-  std::printf("place      lat %.4f deg, lon %.4f deg\n", args.lat_deg, args.lon_deg);
+  std::printf("place      lat %.4f deg, lon %s\n", args.lat_deg,
+              longitude_text(args.lon_deg, 4).c_str());
   std::printf("elevation  %.4f deg  (geometric, no refraction)\n", glm::degrees(a.elevation));
   std::printf("azimuth    %.4f deg  (clockwise from north)\n", glm::degrees(a.azimuth));
   double sub_lat = std::asin(glm::clamp(sun.z, -1.0, 1.0));
@@ -76,10 +74,9 @@ void run(const ProbeSunArgs& args) {
 void add_probe_sun_command(CLI::App& probe) {
   auto args = std::make_shared<ProbeSunArgs>();
   CLI::App* cmd = probe.add_subcommand("sun", "The sun's elevation and azimuth over a place");
-  cmd->add_option("--planet", args->planet, "Body name or file (earth, mars, asteroid)")
-      ->capture_default_str();
+  cmd->add_option("--planet", args->planet, body_option_help())->capture_default_str();
   cmd->add_option("--lat", args->lat_deg, "Geodetic latitude, degrees")->required();
-  cmd->add_option("--lon", args->lon_deg, "Longitude east, degrees")->required();
+  cmd->add_option("--lon", args->lon_deg, "Longitude east, degrees (-180 to 360)")->required();
   cmd->add_option("--time", args->time, "UTC, e.g. 2026-06-21T12:00:00Z")->required();
   cmd->callback([args] { run(*args); });
 }

@@ -1,5 +1,6 @@
 // planet reference: the path-traced ground truth of a canonical scene, as
 // linear EXR (and a tone-mapped PNG beside it), through the reference cache.
+#include "apps/cli_options.h"
 #include "apps/commands.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
@@ -207,9 +208,9 @@ void add_reference_command(CLI::App& app) {
                   "Output EXR (a tone-mapped PNG is written beside it); required");
   cmd->add_option("--mode", args->mode, "rgb (the techniques' 3 wavelengths) or spectral");
   cmd->add_option("--width", args->width, "Image width (default: the scene's, 128)")
-      ->check(CLI::Range(1, 8192));
+      ->check(within(1, 8192));
   cmd->add_option("--height", args->height, "Image height (default: the scene's, 64)")
-      ->check(CLI::Range(1, 8192));
+      ->check(within(1, 8192));
   cmd->add_option("--shard", args->shard,
                   "Render share K of N (from 0) of the pixels, for a cluster: its sums go to "
                   "<--out's stem>.shares/share-K-of-N.sums");

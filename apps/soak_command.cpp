@@ -1,6 +1,7 @@
 // planet soak: a long simulated flight over every body, switching bodies
 // and techniques, that fails if memory, GL objects or the terrain's tiles
 // grow (render/soak.h).
+#include "apps/cli_options.h"
 #include "apps/commands.h"
 #include "atmosphere/gpu/registry.h"
 #include "core/atomic_file.h"
@@ -95,21 +96,21 @@ void add_soak_command(CLI::App& app) {
       "fail if memory, GL objects or terrain tiles grow after the warm-up rounds");
   SoakOptions& o = args->options;
   cmd->add_option("--frames", o.frames, "Frames in all (default 10000)")
-      ->check(CLI::Range(8, 10000000));
+      ->check(within(8, 10000000));
   cmd->add_option("--cycles", o.cycles, "Rounds over the bodies, the warm-up's included")
-      ->check(CLI::Range(2, 100000));
+      ->check(within(2, 100000));
   cmd->add_option("--warmup-cycles", o.warmup_cycles,
                   "The first rounds, which fill caches and shape the heap (default 2)")
-      ->check(CLI::Range(1, 100000));
-  cmd->add_option("--width", o.width, "Frame width")->check(CLI::Range(8, 4096));
-  cmd->add_option("--height", o.height, "Frame height")->check(CLI::Range(8, 4096));
-  cmd->add_option("--bodies", o.bodies, "Bodies in turn (names or files)")->delimiter(',');
-  cmd->add_option("--techniques", o.techniques, "Techniques in turn on each body with air")
-      ->delimiter(',');
-  cmd->add_option("--terrain-cache-mib", args->terrain_cache_mib, "Terrain tiles kept resident, MiB")
-      ->check(CLI::Range(8.0, 65536.0));
+      ->check(within(1, 100000));
+  cmd->add_option("--width", o.width, "Frame width")->check(within(8, 4096));
+  cmd->add_option("--height", o.height, "Frame height")->check(within(8, 4096));
+  add_list_option(*cmd, "--bodies", o.bodies, body_option_help("Bodies in turn, names or files"));
+  add_list_option(*cmd, "--techniques", o.techniques, "Techniques in turn on each body with air");
+  cmd->add_option("--terrain-cache-mib", args->terrain_cache_mib,
+                  "Terrain tiles kept resident, MiB")
+      ->check(within(8.0, 65536.0));
   cmd->add_option("--sample-every", o.sample_every, "Frames between samples of memory")
-      ->check(CLI::Range(1, 100000));
+      ->check(within(1, 100000));
   cmd->add_option("--out", args->out_dir, "Folder for soak.json (every sample); none by default");
   cmd->add_flag("--quiet", args->quiet, "Print nothing but the result and errors");
   cmd->callback([args] { run(*args); });

@@ -201,7 +201,8 @@ std::vector<StabilityCell> plan_stability(const StabilityOptions& o) {
   for (const std::string& b : bodies) {
     const auto& known = stability_bodies();
     if (std::find(known.begin(), known.end(), b) == known.end()) {
-      throw InputError(fmt::format("lab stability --bodies: '{}' is not one of earth, mars, asteroid", b));
+      throw InputError(
+          fmt::format("lab stability --bodies: '{}' is not one of {}", b, fmt::join(known, ", ")));
     }
   }
   std::vector<StabilityCell> cells;

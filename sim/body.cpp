@@ -5,6 +5,9 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+#include <system_error>
+
 namespace planet {
 
 Body load_body(const std::filesystem::path& file) {
@@ -48,8 +51,20 @@ std::filesystem::path find_body_file(const std::string& name_or_path) {
   if (std::filesystem::exists(p)) return p;
   std::filesystem::path shipped = data_dir() / "planets" / (name_or_path + ".json");
   if (std::filesystem::exists(shipped)) return shipped;
-  throw InputError(fmt::format("{}: no such body file, and no body of that name in {}",
-                               name_or_path, (data_dir() / "planets").string()));
+  throw InputError(fmt::format("{}: no such body file, and no body of that name in {} ({})",
+                               name_or_path, (data_dir() / "planets").string(),
+                               fmt::join(shipped_body_names(), ", ")));
+}
+
+std::vector<std::string> shipped_body_names() {
+  std::vector<std::string> names;
+  std::error_code ec;
+  for (std::filesystem::directory_iterator it(data_dir() / "planets", ec), end; !ec && it != end;
+       it.increment(ec)) {
+    if (it->path().extension() == ".json") names.push_back(it->path().stem().string());
+  }
+  std::sort(names.begin(), names.end());
+  return names;
 }
 
 }  // namespace planet

@@ -9,6 +9,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace planet {
 
@@ -47,5 +48,10 @@ Body load_body(const std::filesystem::path& file);
 // Finds a body file: an existing path is taken as it is, otherwise a bare
 // name ("earth") is looked up in the shipped data/planets folder.
 std::filesystem::path find_body_file(const std::string& name_or_path);
+
+// The bare names find_body_file knows (data/planets/*.json), sorted; empty
+// where that folder cannot be read. Every list of bodies a user is shown
+// comes from here, so that a body file added there shows up in them.
+std::vector<std::string> shipped_body_names();
 
 }  // namespace planet

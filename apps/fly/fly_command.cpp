@@ -1,6 +1,7 @@
 // planet fly: a window onto a body, flown with mouse and keyboard, with a
 // HUD to change body, atmosphere technique, time and exposure. The options
 // and their checks are here; the flight is fly_session.h.
+#include "apps/cli_options.h"
 #include "apps/commands.h"
 #include "apps/fly/fly_hud.h"
 #include "apps/fly/fly_input.h"
@@ -36,12 +37,8 @@ void run(const FlyArgs& args) {
         args.antialiasing));
   }
   if (!args.flight_file.empty()) load_flight_script(args.flight_file);
-  if (!(args.lat_deg >= -90.0 && args.lat_deg <= 90.0)) {
-    throw InputError(fmt::format("--lat: {} is not a latitude (-90 to 90 deg)", args.lat_deg));
-  }
-  if (!(args.lon_deg >= -180.0 && args.lon_deg <= 360.0)) {
-    throw InputError(fmt::format("--lon: {} is not a longitude (-180 to 360 deg)", args.lon_deg));
-  }
+  checked_latitude_deg(args.lat_deg, "--lat");
+  checked_longitude_deg(args.lon_deg, "--lon");
   if (args.orbit_inclination_deg > 180.0) {
     throw InputError("--orbit-inclination: must be 0 to 180 deg");
   }
@@ -109,9 +106,11 @@ void run(const FlyArgs& args) {
 void add_fly_command(CLI::App& app) {
   auto args = std::make_shared<FlyArgs>();
   CLI::App* cmd = app.add_subcommand("fly", "Fly over a body in a window (mouse, keyboard, HUD)");
-  cmd->add_option("--planet", args->planet, "Body name or file")->capture_default_str();
-  cmd->add_option("--lat", args->lat_deg, "Start latitude, degrees")->capture_default_str();
-  cmd->add_option("--lon", args->lon_deg, "Start longitude, degrees")->capture_default_str();
+  cmd->add_option("--planet", args->planet, body_option_help())->capture_default_str();
+  cmd->add_option("--lat", args->lat_deg, "Start latitude, degrees (-90 to 90)")
+      ->capture_default_str();
+  cmd->add_option("--lon", args->lon_deg, "Start longitude east, degrees (-180 to 360)")
+      ->capture_default_str();
   cmd->add_option("--height", args->height_m, "Start height above the ground, metres")
       ->capture_default_str();
   cmd->add_option("--heading", args->heading_deg, "Start heading, degrees from north")
@@ -128,7 +127,7 @@ void add_fly_command(CLI::App& app) {
   cmd->add_option("--error-model", args->error_model,
                   "The governor's table (default data/lab/error_model.json)");
   cmd->add_option("--exposure", args->exposure, "Exposure")
-      ->check(CLI::PositiveNumber)
+      ->check(positive())
       ->capture_default_str();
   cmd->add_flag("--auto-exposure", args->auto_exposure,
                 "Each frame's exposure from its own mean luminance, up to a dark-adapted eye's "

@@ -190,7 +190,12 @@ def command_line_seeds():
                  ["cluster", "slurm", "--shares", "4", "--", "reference", "--scene", "earth_noon"],
                  ["probe", "sky", "--planet", "earth", "--technique", "raymarch:view_steps=8"],
                  ["accuracy", "--scene", "earth_noon", "--technique", "bruneton:orders=4", "--paths", "4096"],
-                 ["techniques"], ["--help"], ["capture", "--shard", "1/3", "--flight", flights + "/ascent.json"]):
+                 ["techniques"], ["--help"], ["capture", "--shard", "1/3", "--flight", flights + "/ascent.json"],
+                 ["--version"], ["probe", "ground", "--planet", "mars", "--lat", "18.65", "--lon", "226.2"],
+                 ["lab", "run", "--techniques", "raymarch:view_steps=8,light_steps=4,hillaire", "--quality",
+                  "default", "fine", "--scenes", "earth_noon,", "--techniques", "oneil"],
+                 ["lab", "governor", "--budget", "2,5", "10", "--canonical-only"],
+                 ["soak", "--bodies", ",", "--techniques", "=,:,=x"]):
         put("command_line", "\0".join(argv))
 
 
