@@ -7,9 +7,7 @@ namespace planet {
 
 FreeFlight::FreeFlight(const Body& body, const Geodetic& place, double heading)
     : geodesy_(body.shape), ground_([](const Geodetic&) { return 0.0; }) {
-  Geodetic start = place;
-  start.height = std::max(start.height, kClearance);
-  camera_.pos_body = geodesy_.body_from_geodetic(start);
+  camera_.pos_body = geodesy_.body_from_geodetic(place);
   camera_.body_from_camera = glm::normalize(glm::quat_cast(geodesy_.body_from_enu(place)) *
                                             enu_from_camera(heading, 0.0, 0.0));
 }

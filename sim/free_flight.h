@@ -1,7 +1,7 @@
 #pragma once
 // Free flight: six degrees of freedom in the body-fixed frame, speed scaled
-// with the height above the surface (0.2 m/s per metre of height:
-// centimetres per second at the ground, thousands of km per second far
+// with the height above the surface (0.2 m/s per metre of height, and never
+// slower than a brisk walk near the ground; thousands of km per second far
 // out), never below a clearance above the surface.
 #include "sim/flight_controller.h"
 #include "sim/geodesy.h"
@@ -12,7 +12,9 @@ namespace planet {
 
 class FreeFlight : public FlightController {
  public:
-  // Starts at `place`, looking along `heading` (radians), level.
+  // Starts at `place`, looking along `heading` (radians), level. The place
+  // is taken as it is (a small body's ground lies below its ellipsoid in
+  // places): set_ground lifts it where it is below the ground.
   FreeFlight(const Body& body, const Geodetic& place, double heading);
   FreeFlight(const Body& body, const Camera& camera);
 
@@ -27,7 +29,9 @@ class FreeFlight : public FlightController {
 
   static constexpr double kClearance = 0.5;       // metres above the surface
   static constexpr double kSpeedPerHeight = 0.2;  // per second
-  static constexpr double kMinSpeed = 0.02;       // metres per second
+  // Metres per second: a brisk walk. Height-scaled alone, 2 m above the
+  // ground gave 0.4 m/s, and four seconds of W moved the pilot 1.6 m.
+  static constexpr double kMinSpeed = 1.5;
   static constexpr double kMaxSpeed = 5.0e6;      // metres per second
   static constexpr double kTurnRate = 1.2;        // radians per second at full input
 

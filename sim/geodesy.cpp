@@ -66,4 +66,21 @@ glm::dquat enu_from_camera(double heading, double pitch, double roll) {
   return glm::normalize(yaw * base * pitch_q * roll_q);
 }
 
+LookAngles look_angles(const glm::dquat& enu_from_camera) {
+  glm::dvec3 forward = enu_from_camera * glm::dvec3(0, 0, -1);
+  glm::dvec3 right = enu_from_camera * glm::dvec3(1, 0, 0);
+  glm::dvec3 top = enu_from_camera * glm::dvec3(0, 1, 0);
+  LookAngles a;
+  a.pitch = std::asin(glm::clamp(forward.z, -1.0, 1.0));
+  // Straight up or down the forward axis has no heading: the top's (or,
+  // looking up, its opposite's) stands in for it.
+  glm::dvec3 level = std::abs(forward.z) < 1.0 - 1e-12 ? forward : -forward.z * top;
+  a.heading = std::atan2(level.x, level.y);
+  if (a.heading < 0) a.heading += 2.0 * glm::pi<double>();
+  if (a.heading >= 2.0 * glm::pi<double>()) a.heading = 0;  // -1e-17 wrapped
+  // Roll, right wing down positive: the right axis below the horizon.
+  a.roll = std::atan2(-right.z, top.z);
+  return a;
+}
+
 }  // namespace planet

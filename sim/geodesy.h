@@ -55,4 +55,13 @@ class Geodesy {
 // axes into ENU axes.
 glm::dquat enu_from_camera(double heading, double pitch, double roll);
 
+// The inverse of enu_from_camera: heading in [0, 2 pi), pitch in
+// [-pi / 2, pi / 2] and roll in (-pi, pi], radians. Looking straight up or
+// down, heading and roll share one turn; the heading is then that of the
+// camera's top.
+struct LookAngles {
+  double heading = 0, pitch = 0, roll = 0;
+};
+LookAngles look_angles(const glm::dquat& enu_from_camera);
+
 }  // namespace planet

@@ -135,4 +135,57 @@ HorizonAngles horizon_angles(const glm::dvec3& dir_body, double lat, double lon)
   return a;
 }
 
+double sun_hour_angle(const glm::dvec3& sun_dir_body, double lon) {
+  // The sun stands over the longitude atan2(y, x) of the body frame; the
+  // hour angle is how far west of the place's meridian that is.
+  double h =
+      std::remainder(lon - std::atan2(sun_dir_body.y, sun_dir_body.x), 2.0 * glm::pi<double>());
+  return h <= -glm::pi<double>() ? h + 2.0 * glm::pi<double>() : h;
+}
+
+double local_solar_hours(double hour_angle) {
+  double hours = 12.0 + hour_angle * 12.0 / glm::pi<double>();
+  return hours >= 24.0 ? hours - 24.0 : hours;
+}
+
+UtcSeconds utc_at_sun_hour_angle(const SunEphemeris& ephemeris, const BodyRotation& rotation,
+                                 double lon, double hour_angle, UtcSeconds near) {
+  if (!ephemeris.available()) return near;
+  const double turn = 2.0 * glm::pi<double>();
+  auto hour_angle_at = [&](UtcSeconds t) {
+    return sun_hour_angle(sun_dir_body(ephemeris, rotation, t), lon);
+  };
+  // Newton's steps on the hour angle, which grows nearly evenly with time
+  // (its rate is a turn over the solar day, taken from the ephemeris itself
+  // over a minute): the first lands within seconds on every body here, and
+  // wrapping the miss to (-pi, pi] keeps the answer within half a solar day.
+  UtcSeconds t = near;
+  for (int i = 0; i < 8; ++i) {
+    double rate = std::remainder(hour_angle_at(t + 30.0) - hour_angle_at(t - 30.0), turn) / 60.0;
+    if (rate == 0.0) break;
+    double dt = -std::remainder(hour_angle_at(t) - hour_angle, turn) / rate;
+    t += dt;
+    if (std::abs(dt) < 0.1) break;
+  }
+  return t;
+}
+
+Daylight daylight(double sun_elevation, bool has_atmosphere) {
+  if (sun_elevation >= 0.0) return Daylight::kDay;
+  if (has_atmosphere && sun_elevation >= glm::radians(-12.0)) return Daylight::kTwilight;
+  return Daylight::kNight;
+}
+
+const char* daylight_name(Daylight d) {
+  switch (d) {
+    case Daylight::kDay:
+      return "day";
+    case Daylight::kTwilight:
+      return "twilight";
+    case Daylight::kNight:
+      return "night";
+  }
+  return "";
+}
+
 }  // namespace planet

@@ -52,4 +52,23 @@ struct HorizonAngles {
 };
 HorizonAngles horizon_angles(const glm::dvec3& dir_body, double lat, double lon);
 
+// The sun's hour angle at a longitude (radians, east positive): 0 as the
+// sun crosses the meridian, growing through the afternoon, in (-pi, pi].
+double sun_hour_angle(const glm::dvec3& sun_dir_body, double lon);
+// Local (apparent) solar time, hours from 0 to 24: 12 at the sun's transit.
+double local_solar_hours(double hour_angle);
+// The instant within half a solar day of `near` at which the sun's hour
+// angle at `lon` is `hour_angle` (to a second of the body's solar day);
+// `near` itself for a body without an ephemeris.
+UtcSeconds utc_at_sun_hour_angle(const SunEphemeris& ephemeris, const BodyRotation& rotation,
+                                 double lon, double hour_angle, UtcSeconds near);
+
+// Whether it is day at a place: day while the sun's centre is above the
+// horizon; under air, twilight down to 12 deg below it (nautical twilight's
+// end, when the sky is dark enough for the bright stars), then night. An
+// airless body has no twilight.
+enum class Daylight { kDay, kTwilight, kNight };
+Daylight daylight(double sun_elevation, bool has_atmosphere);
+const char* daylight_name(Daylight daylight);
+
 }  // namespace planet

@@ -126,9 +126,11 @@ void add_fly_command(CLI::App& app) {
                   "predicted error is within PCT percent (also a HUD slider)");
   cmd->add_option("--error-model", args->error_model,
                   "The governor's table (default data/lab/error_model.json)");
-  cmd->add_option("--exposure", args->exposure, "Exposure")
+  cmd->add_option("--exposure", args->exposure,
+                  "Exposure (where the sun is down it follows the scene unless given)")
       ->check(positive())
-      ->capture_default_str();
+      ->capture_default_str()
+      ->each([args](const std::string&) { args->exposure_given = true; });
   cmd->add_flag("--auto-exposure", args->auto_exposure,
                 "Each frame's exposure from its own mean luminance, up to a dark-adapted eye's "
                 "(also a HUD box)");

@@ -18,6 +18,12 @@ const char* kTimeScaleNames[] = {"pause", "x1", "x10", "x100", "x1000", "x10000"
 // Settings take this much width: the panel stays a corner of the view.
 constexpr float kItemWidth = 150.0f;
 
+// Metres per second near the ground, km/s higher up (free flight's speed
+// runs from a walk to thousands of km/s).
+std::string speed_text(double m_s) {
+  return m_s < 1e3 ? fmt::format("{:.1f} m/s", m_s) : fmt::format("{:.1f} km/s", m_s / 1e3);
+}
+
 }  // namespace
 
 Hud::Hud(GLFWwindow* window) {
@@ -52,11 +58,17 @@ HudChanges Hud::draw(const HudView& v) {
   // folds it away, H hides it.
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowBgAlpha(0.6f);
-  ImGui::Begin("planet (H hides)", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
-  ImGui::Text("%s  %s%s", v.body_name.c_str(), v.utc.c_str(), v.recording ? "  [rec]" : "");
-  ImGui::Text("%.1f m above ground (%.0f m ellipsoid)", v.height_m, v.height_ellipsoid_m);
-  ImGui::Text("%.3g m/s  lat %.4f lon %.4f  sun %.1f deg", v.speed_m_s, v.lat_deg, v.lon_deg,
-              v.sun_elevation_deg);
+  // A recording says so in the title (one id for both titles: the panel
+  // keeps its place and folding).
+  ImGui::Begin(v.recording ? "planet [rec] (H hides)###planet" : "planet (H hides)###planet",
+               nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  // Three lines, as narrow as they go: the panel stays a corner of the view.
+  ImGui::Text("%s  %s  sun %.1f deg %s", v.body_name.c_str(), v.utc.c_str(), v.sun_elevation_deg,
+              v.daylight.c_str());
+  ImGui::Text("%.1f m above ground (%.0f m ellipsoid)  speed %s", v.height_m, v.height_ellipsoid_m,
+              speed_text(v.speed_m_s).c_str());
+  ImGui::Text("lat %.4f lon %.4f  heading %.1f pitch %.1f", v.lat_deg, v.lon_deg, v.heading_deg,
+              v.pitch_deg);
   // The frame's rate and cost, and how many of its passes reused an
   // earlier frame's result; unfolded, each pass's GPU time or "reused".
   const std::string frame_line =

@@ -15,6 +15,8 @@ struct HudView {
   double height_m = 0;            // above the ground under the camera
   double height_ellipsoid_m = 0;  // above the body's ellipsoid
   double speed_m_s = 0, lat_deg = 0, lon_deg = 0, sun_elevation_deg = 0;
+  double heading_deg = 0, pitch_deg = 0;  // the view's, in the local east-north-up frame
+  std::string daylight;                   // "day", "twilight" or "night" (sun_ephemeris.h)
   double frame_ms = 0, gpu_ms = 0;
   std::string passes;  // one line per pass: its GPU ms, or "reused"
   int passes_ran = 0, passes_reused = 0;

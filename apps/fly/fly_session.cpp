@@ -5,6 +5,7 @@
 #include "core/progress.h"
 #include "gl/context.h"
 #include "gl/driver_watch.h"
+#include "sim/body_switch.h"
 #include "sim/free_flight.h"
 #include "sim/geodesy.h"
 #include "sim/orbit_flight.h"
@@ -31,6 +32,12 @@ constexpr double kStep = 1.0 / 120.0;  // fixed simulation step, seconds
 constexpr double kLongestStallSeconds = 30.0;
 constexpr double kRecordRate = 10.0;  // recorded keyframes (= capture frames) per second
 const std::array<const char*, 4> kBodies = {"earth", "mars", "asteroid", "moon"};
+
+// "10:30 local solar time" from the sun's hour angle.
+std::string solar_time_text(double hour_angle) {
+  int minutes = int(std::lround(local_solar_hours(hour_angle) * 60.0)) % (24 * 60);
+  return fmt::format("{:02d}:{:02d}", minutes / 60, minutes % 60);
+}
 
 }  // namespace
 
@@ -196,37 +203,84 @@ void FlySession::set_error_budget(double percent) {
   std::fflush(stdout);
 }
 
-// A new body: the pilot starts over the start place (a few km up unless it
-// came from the command line).
+// A new body. From the command line, the pilot starts over the start
+// place; a switch keeps the place, the height above the ground, the look
+// and the local solar time (sim/body_switch.h); a script's body starts
+// where the script puts it.
 void FlySession::load(const std::string& name, bool from_args) {
   // A recording holds one body: it ends where the body changes.
   if (recorder_) toggle_recording();
+  // Where the pilot was, taken before the new body's terrain replaces the
+  // old one's.
+  const bool switching = !from_args && geodesy_ != nullptr;
+  Body was_body;
+  Camera was_camera;
+  double was_height = 0;
+  if (switching) {
+    was_body = body_;
+    was_camera = camera();
+    Geodetic g = geodesy_->geodetic_from_body(was_camera.pos_body);
+    was_height = g.height - ground_at(g);
+  }
   Body body = load_body(find_body_file(name));
   attach(body);
   body_ = body;
   geodesy_ = std::make_unique<Geodesy>(body.shape);
   body_key_ = name;
-  // Heights count from the ground under the start place.
-  Geodetic place{glm::radians(args_.lat_deg), glm::radians(args_.lon_deg), 0.0};
-  double ground = ground_at(place);
-  place.height =
-      ground + (from_args ? args_.height_m : std::max(2.0, 1e-3 * body.shape.equatorial_radius));
   scripted_ = nullptr;
   auto ground_fn = [this](const Geodetic& g) { return ground_at(g); };
-  if (from_args && args_.orbit_inclination_deg >= 0) {
-    KeplerOrbit orbit = circular_orbit_over(body, place, glm::radians(args_.orbit_inclination_deg),
-                                            true, clock_.utc());
-    auto orbit_flight = std::make_unique<OrbitFlight>(body, orbit, clock_.utc());
-    orbit_flight->set_ground(ground_fn);
-    controller_ = std::move(orbit_flight);
-  } else {
-    auto free_flight = std::make_unique<FreeFlight>(body, place, glm::radians(args_.heading_deg));
+  std::string kept;
+  if (switching) {
+    BodySwitch s = switch_body(was_body, was_camera, was_height, clock_.utc(), body, ground_fn);
+    clock_.set(s.utc);
+    auto free_flight = std::make_unique<FreeFlight>(body, s.camera);
     free_flight->set_ground(ground_fn);
     controller_ = std::move(free_flight);
+    kept = fmt::format(
+        "; kept from {}: lat {:.4f} lon {:.4f}, the height above the ground{}, local solar time "
+        "{} (clock to {})",
+        was_body.name, glm::degrees(s.place.lat), glm::degrees(s.place.lon),
+        s.height_clamped ? fmt::format(" (clamped from {:.1f} m)", was_height) : std::string(),
+        solar_time_text(s.sun_hour_angle), format_utc(s.utc));
+  } else {
+    // Heights count from the ground under the start place.
+    Geodetic place{glm::radians(args_.lat_deg), glm::radians(args_.lon_deg), 0.0};
+    place.height =
+        ground_at(place) +
+        (from_args ? args_.height_m : std::max(2.0, 1e-3 * body.shape.equatorial_radius));
+    if (from_args && args_.orbit_inclination_deg >= 0) {
+      KeplerOrbit orbit = circular_orbit_over(
+          body, place, glm::radians(args_.orbit_inclination_deg), true, clock_.utc());
+      auto orbit_flight = std::make_unique<OrbitFlight>(body, orbit, clock_.utc());
+      orbit_flight->set_ground(ground_fn);
+      controller_ = std::move(orbit_flight);
+    } else {
+      auto free_flight = std::make_unique<FreeFlight>(body, place, glm::radians(args_.heading_deg));
+      free_flight->set_ground(ground_fn);
+      controller_ = std::move(free_flight);
+    }
   }
-  std::printf("body: %s, %.1f m above the ground (%.1f m above the ellipsoid)\n", body.name.c_str(),
-              place.height - ground, place.height);
+  // What the HUD will show: the camera's own height over the real ground.
+  Geodetic at = geodesy_->geodetic_from_body(controller_->camera().pos_body);
+  std::string light = switching || from_args ? "; " + light_up(at) : std::string();
+  std::printf("body: %s, %.1f m above the ground (%.1f m above the ellipsoid)%s%s\n",
+              body.name.c_str(), at.height - ground_at(at), at.height, kept.c_str(), light.c_str());
   std::fflush(stdout);
+}
+
+// Below the horizon a fixed exposure shows a black screen: there the
+// exposure follows the scene (and the stars come out), unless the command
+// line fixed it.
+std::string FlySession::light_up(const Geodetic& place) {
+  double elevation = horizon_angles(sun_dir(), place.lat, place.lon).elevation;
+  Daylight light = daylight(elevation, body_.has_atmosphere());
+  std::string text =
+      fmt::format("sun {:.1f} deg: {}", glm::degrees(elevation), daylight_name(light));
+  if (light != Daylight::kDay && !renderer_->auto_exposure() && !args_.exposure_given) {
+    renderer_->set_auto_exposure(true);
+    text += ", the exposure follows the scene (auto)";
+  }
+  return text;
 }
 
 // A new technique: same body, same place.
@@ -268,6 +322,11 @@ HudView FlySession::hud_view(const Camera& cam, const glm::dvec3& sun, double re
   v.lat_deg = glm::degrees(g.lat);
   v.lon_deg = glm::degrees(g.lon);
   v.sun_elevation_deg = glm::degrees(sun_angles.elevation);
+  v.daylight = daylight_name(daylight(sun_angles.elevation, body_.has_atmosphere()));
+  LookAngles look = look_angles(glm::conjugate(glm::quat_cast(geodesy_->body_from_enu(g))) *
+                                cam.body_from_camera);
+  v.heading_deg = glm::degrees(look.heading);
+  v.pitch_deg = glm::degrees(look.pitch);
   v.frame_ms = real_dt * 1e3;
   for (const auto& p : stats_.passes) {
     v.passes += p.reused ? fmt::format("{:<24} reused\n", p.pass)
@@ -276,7 +335,8 @@ HudView FlySession::hud_view(const Camera& cam, const glm::dvec3& sun, double re
   }
   v.gpu_ms = stats_.total_gpu_ms();
   v.body_name = body_.name;
-  v.utc = format_utc(clock_.utc());
+  // To the second: the HUD's first line holds the sun too.
+  v.utc = format_utc(clock_.utc()).substr(0, 19) + "Z";
   v.recording = recorder_ != nullptr;
   v.clock_locked = recorder_ != nullptr || scripted_ != nullptr;
   v.bodies.assign(kBodies.begin(), kBodies.end());

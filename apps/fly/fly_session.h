@@ -41,6 +41,7 @@ struct FlyArgs {
   int antialiasing = 0;
   double exposure = 8.0, vertical_fov_deg = 60.0;
   bool auto_exposure = false;  // each frame's own, from its mean luminance
+  bool exposure_given = false;  // --exposure on the command line: kept at night too
   std::string out_dir = ".";
   std::string flight_file;  // fly a script instead of the start place
   bool technique_given = false;  // --technique on the command line: it wins over a budget
@@ -64,6 +65,9 @@ class FlySession {
   glm::dvec3 sun_dir() const;
   void attach(const Body& body);
   void load(const std::string& name, bool from_args);
+  // "sun E deg: day" (twilight, night) at a place of the body; not by day,
+  // the exposure turns automatic unless the command line fixed it.
+  std::string light_up(const Geodetic& place);
   void set_technique(const std::string& name);
   // A budget (percent) lets the governor choose; 0 turns it off.
   void set_error_budget(double percent);

@@ -36,6 +36,37 @@ TEST(FlightControllerTest, SpeedScalesWithHeight) {
   }
 }
 
+// Issue 62, point 5: 2 m above the ground, four seconds of W moved the
+// pilot 1.6 m (0.2 m/s per metre of height alone).
+TEST(FlightControllerTest, NearTheGroundWMovesAtWalkingPaceOrBetter) {
+  Body earth = load_body(find_body_file("earth"));
+  Geodesy geodesy(earth.shape);
+  FreeFlight flight(earth, Geodetic{glm::radians(46.55), glm::radians(7.98), 2.0}, 0.0);
+  glm::dvec3 start = flight.camera().pos_body;
+  FlightInput forward;
+  forward.move = {0, 0, 1};
+  for (int i = 0; i < 480; ++i) flight.step(1.0 / 120.0, 0.0, forward);
+  double moved = glm::length(flight.camera().pos_body - start);
+  EXPECT_GE(moved, 4.0 * 1.4) << "four seconds of W moved " << moved << " m";
+  EXPECT_GE(flight.speed(), 1.4);
+}
+
+// A small body's ground lies below its ellipsoid in places: a start there
+// keeps its height above the ground, not the ellipsoid's clearance (the
+// asteroid's start was held 307.7 m above the ground where 30 m was asked).
+TEST(FlightControllerTest, AStartBelowTheEllipsoidKeepsItsHeightAboveTheGround) {
+  Body earth = load_body(find_body_file("earth"));
+  const double ground = -307.2;
+  FreeFlight flight(earth, Geodetic{0.3, 0.2, ground + 30.0}, 0.0);
+  flight.set_ground([&](const Geodetic&) { return ground; });
+  EXPECT_NEAR(flight.height_above_ground(), 30.0, 1e-6);
+  FlightInput down;
+  down.move = {0, -1, 0};
+  down.boost = 10.0;
+  for (int i = 0; i < 600; ++i) flight.step(1.0 / 120.0, 0.0, down);
+  EXPECT_NEAR(flight.height_above_ground(), FreeFlight::kClearance, 1e-6);
+}
+
 TEST(FlightControllerTest, DivingNeverEntersTheGround) {
   Body earth = load_body(find_body_file("earth"));
   FreeFlight flight(earth, Geodetic{glm::radians(46.5), glm::radians(8.0), 3000.0}, 0.0);

@@ -80,6 +80,27 @@ TEST(GeodesyTest, CameraAttitudeFromHeadingPitchRoll) {
   EXPECT_NEAR(up.x, 1.0, 1e-12);
 }
 
+// The HUD's heading and pitch (issue 62, point 6) read back the angles a
+// camera was set with.
+TEST(GeodesyTest, LookAnglesReadBackHeadingPitchAndRoll) {
+  for (double heading : {0.0, 45.0, 90.0, 181.0, 359.0}) {
+    for (double pitch : {-89.0, -30.0, 0.0, 12.5, 89.0}) {
+      for (double roll : {-120.0, 0.0, 30.0, 179.0}) {
+        LookAngles a = look_angles(
+            enu_from_camera(glm::radians(heading), glm::radians(pitch), glm::radians(roll)));
+        EXPECT_NEAR(glm::degrees(a.heading), heading, 1e-9)
+            << heading << " " << pitch << " " << roll;
+        EXPECT_NEAR(glm::degrees(a.pitch), pitch, 1e-9) << heading << " " << pitch << " " << roll;
+        EXPECT_NEAR(glm::degrees(a.roll), roll, 1e-9) << heading << " " << pitch << " " << roll;
+      }
+    }
+  }
+  // Straight down, the heading is the camera top's.
+  LookAngles down = look_angles(enu_from_camera(glm::radians(90.0), glm::radians(-90.0), 0.0));
+  EXPECT_NEAR(glm::degrees(down.heading), 90.0, 1e-6);
+  EXPECT_NEAR(glm::degrees(down.pitch), -90.0, 1e-6);
+}
+
 }  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

@@ -1,8 +1,12 @@
 // The asteroid's shape: OBJ cages, their Catmull-Clark limit surface, the
 // direction -> radius table built from it, and every bad cage.
 #include "terrain/cage_height.h"
+#include "terrain/ground.h"
 #include "terrain/obj_cage.h"
 #include "terrain/terrain_config.h"
+#include "terrain/terrain_surface.h"
+
+#include "sim/free_flight.h"
 
 #include <opensubdiv/far/error.h>
 
@@ -254,6 +258,39 @@ TEST(CageHeightTest, AsteroidBodyFileUsesTheCage) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent/shape.obj"), std::string::npos);
   }
+}
+
+// The pilot over the asteroid counts heights from its ground, the cage's
+// limit surface displaced by its noise, wherever that lies against the
+// ellipsoid: fly's start 30 m above the ground over the Alps' latitude and
+// longitude, where the ground lies 307 m inside the ellipsoid, was held at
+// the ellipsoid, 307.7 m above the ground (issue 62, point 3).
+TEST(CageHeightTest, ThePilotOverTheAsteroidCountsFromItsGround) {
+  Body body = load_body(find_body_file("asteroid"));
+  TerrainSurface surface(body.shape, parse_terrain(body));
+  Geodesy geodesy(body.shape);
+  auto ground = [&](const Geodetic& g) { return ground_height(surface, geodesy, g); };
+  Geodetic place{glm::radians(46.55), glm::radians(7.98), 0.0};
+  const double below = ground(place);
+  ASSERT_LT(below, -100.0) << "the test wants a place whose ground lies inside the ellipsoid";
+  // The ground point is where the drawn surface (its height source along
+  // the direction) lies.
+  glm::dvec3 p = ground_point(surface, geodesy, place);
+  EXPECT_NEAR(glm::length(p), 30000.0 + surface.heights().height(glm::normalize(p)), 1e-6);
+
+  place.height = below + 30.0;
+  FreeFlight flight(body, place, 0.0);
+  flight.set_ground(ground);
+  EXPECT_NEAR(flight.height_above_ground(), 30.0, 1e-6);
+  // Straight down at ten times the speed: held at the clearance above that
+  // ground, nowhere near the ellipsoid.
+  FlightInput down;
+  down.move = {0, -1, 0};
+  down.boost = 10.0;
+  for (int i = 0; i < 240; ++i) flight.step(1.0 / 120.0, 0.0, down);
+  EXPECT_NEAR(flight.height_above_ground(), FreeFlight::kClearance, 1e-6);
+  EXPECT_NEAR(geodesy.geodetic_from_body(flight.camera().pos_body).height,
+              below + FreeFlight::kClearance, 1e-3);
 }
 
 // Real shape models (4 Vesta, 243 Ida, 951 Gaspra), where Debian's
