@@ -10,6 +10,7 @@
 #include "lab/accuracy.h"
 #include "lab/color_difference.h"
 #include "lab/debiased_error.h"
+#include "lab/error_png.h"
 #include "lab/pareto.h"
 #include "lab/reference_cache.h"
 #include "lab/scene_render.h"
@@ -164,7 +165,7 @@ void measure_cell(const Scene& scene, const std::string& choice, const SceneTrut
   write_tone_mapped_png(image_stem.string() + "_technique.png", enlarged(image), scene.exposure);
   ImageRGB error = accuracy.signed_error;
   for (float& v : error.pixels) v = std::abs(v);
-  write_tone_mapped_png(image_stem.string() + "_error.png", enlarged(error), 5.0);
+  write_error_png(image_stem.string() + "_error.png", error);
 }
 
 // The geometric mean of positive values (0 where any is not).
