@@ -50,7 +50,12 @@ struct SweepCell {
   std::array<double, 3> single_error{}, higher_error{};
   bool split = false;                      // the two above were measured
   double error() const;                    // the worst channel's debiased relative RMSE
+  double error_low() const, error_high() const;  // that channel's 95 % interval
   bool on_front = false;                   // of its scene
+  // The scene's other points ("technique:quality") whose time ties with
+  // its own (their frames' spreads, centred on the times, overlap): which
+  // is the faster, the frames do not tell.
+  std::vector<std::string> time_ties;
   bool kept = false;                       // read from an earlier run, not timed now
 };
 
