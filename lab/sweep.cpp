@@ -10,11 +10,13 @@
 #include "lab/accuracy.h"
 #include "lab/color_difference.h"
 #include "lab/debiased_error.h"
+#include "lab/error_model_build.h"
 #include "lab/error_png.h"
 #include "lab/pareto.h"
 #include "lab/reference_cache.h"
 #include "lab/scene_render.h"
 #include "render/frame.h"
+#include "render/governor.h"
 
 #include <epoxy/gl.h>
 #include <fmt/format.h>
@@ -332,6 +334,58 @@ SweepCell read_sweep_cell(const std::filesystem::path& file) {
                                  file.string(), e.what()));
   }
   return cell_from_json(j, file.string());
+}
+
+std::vector<ProgressPart> sweep_cell_costs(const SweepOptions& o, const SweepPlan& plan) {
+  // The shipped table's times per choice, ms: the mean frame over its
+  // scenes at its time size, and the model change. Without the table every
+  // cell weighs the same until cells of its kind are timed.
+  std::map<std::string, std::pair<double, int>> frames;
+  std::map<std::string, double> changes;
+  double pixels_ratio = 1;
+  try {
+    ErrorModel table = load_error_model(shipped_error_model_file());
+    for (const ViewClass& view : table.classes) {
+      for (const ErrorModelEntry& entry : view.entries) {
+        frames[entry.choice].first += entry.frame_ms;
+        frames[entry.choice].second += 1;
+      }
+    }
+    changes = table.model_change_ms;
+    if (table.time_width > 0 && table.time_height > 0) {
+      pixels_ratio =
+          double(o.time_width) * o.time_height / (double(table.time_width) * table.time_height);
+    }
+  } catch (const std::exception&) {
+    frames.clear();
+    changes.clear();
+  }
+  // A cell's own work beside its frames and tables: two renderers made,
+  // two renders at the accuracy size measured, its images written; about
+  // a second here (hillaire's cells took 2 s in all, their frames and
+  // tables taking the rest at the table's times, slowed by other work).
+  constexpr double kCellFixedMs = 1000;
+  std::vector<ProgressPart> parts;
+  for (const Scene& scene : plan.scenes) {
+    for (const auto& [technique, quality] : plan.points) {
+      std::string choice = governor_choice(technique, quality);
+      double prior = 1;
+      if (!frames.empty()) {
+        auto frame = frames.find(choice);
+        auto change = changes.find(choice);
+        double frame_ms = frame != frames.end() ? frame->second.first / frame->second.second : 0;
+        double change_ms = change != changes.end() ? change->second : 0;
+        // The frames timed and the one before them; the tables of the timed
+        // technique and of its single scattering.
+        prior = kCellFixedMs + (o.frames + 1) * frame_ms * pixels_ratio + 2 * change_ms;
+      }
+      if (!o.redo && std::filesystem::exists(cell_file(o, scene.name, technique, quality))) {
+        prior = 0;
+      }
+      parts.push_back({choice, prior});
+    }
+  }
+  return parts;
 }
 
 std::vector<SweepCell> run_sweep(const SweepOptions& o, const SweepPlan& plan,

@@ -7,6 +7,7 @@
 // finish, so that a sweep stopped part-way goes on where it stopped; the
 // fronts and tables are made from whatever cells are there.
 #include <nlohmann/json.hpp>
+#include "core/progress.h"
 #include "lab/scene.h"
 
 #include <array>
@@ -80,6 +81,14 @@ PathBudget sweep_reference_budget(const SweepOptions& options, const Scene& scen
 // The scene's ground truth's first order (single scattering), which the
 // sweep splits each cell's error by.
 Scene first_order_scene(Scene scene);
+
+// What the progress line's time left weighs each cell by, in the plan's
+// order: its kind (technique:quality, whose finished cells tell the time of
+// the others), and a prior cost from the shipped governor's table (the
+// choice's frame time over the timed frames, its model change for the
+// tables the cell builds, and a fixed part); 0 for a cell kept from an
+// earlier run.
+std::vector<ProgressPart> sweep_cell_costs(const SweepOptions& options, const SweepPlan& plan);
 
 // Runs the cells not yet done (all with redo), then writes results.json,
 // results.csv and the cells' images under options.out. Needs a GL context.
