@@ -58,9 +58,10 @@ void run_cluster(const ClusterArgs& args, Scheduler scheduler,
     std::filesystem::permissions(file, std::filesystem::perms::owner_exec,
                                  std::filesystem::perm_options::add);
   }
-  std::printf(
-      "wrote %s: %s\n", file.string().c_str(),
-      scheduler == Scheduler::kSlurm ? "submit it with sbatch" : "apply it with kubectl apply -f");
+  std::printf("wrote %s: %s\n", file.string().c_str(),
+              scheduler == Scheduler::kSlurm
+                  ? "submit it with bash (it queues the array and the merge)"
+                  : "apply it with kubectl apply -f");
 }
 
 void add_common(CLI::App* cmd, const std::shared_ptr<ClusterArgs>& args) {
@@ -82,10 +83,10 @@ void add_cluster_command(CLI::App& app) {
       "into the command's --out, byte for byte the run made at once. See docs/cluster.md.");
 
   auto slurm_args = std::make_shared<ClusterArgs>();
-  CLI::App* slurm =
-      cluster->add_subcommand("slurm",
-                              "A Slurm job-array script and its dependent merge job (for sbatch): "
-                              "planet cluster slurm --tasks N reference|capture ...");
+  CLI::App* slurm = cluster->add_subcommand(
+      "slurm",
+      "A script that queues a Slurm job array and its dependent merge job (run it with bash): "
+      "planet cluster slurm --tasks N reference|capture ...");
   add_common(slurm, slurm_args);
   slurm->add_option("--time", slurm_args->time_limit, "Time limit per task (Slurm --time)");
   slurm->add_option("--partition", slurm_args->partition, "Slurm partition");

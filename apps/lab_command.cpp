@@ -124,6 +124,7 @@ void run_lab(LabArgs& args) {
   keep_sweep_tables(plan);
   std::fflush(stdout);
   Progress progress("lab run", total, "cell", args.quiet);
+  progress.expect_parts(sweep_cell_costs(o, plan));  // the time left by the cells' costs
   std::vector<SweepCell> cells = run_sweep(o, plan, [&](int done, int, const std::string&) {
     progress.update(done);
     if (interrupt.interrupted()) {

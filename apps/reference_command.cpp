@@ -61,6 +61,7 @@ void run_share(const ReferenceArgs& args, const Scene& scene, const PathBudget& 
   }
   progress.finish();
   folder.keep();
+  if (args.quiet) return;  // errors alone
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("%s: share %s, %dx%d, %s spp, %s: %.0f paths in %.1f s into %s\n", scene.name.c_str(),
               share.label().c_str(), scene.width, scene.height, budget.label().c_str(),
@@ -88,6 +89,7 @@ void run_merge(const ReferenceArgs& args) {
     std::fprintf(stderr, "planet: the merged reference is not cached: %s\n", e.what());
     cached = "not written";
   }
+  if (args.quiet) return;
   double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("%s: %dx%d, %s spp, %s, merged from %d shares in %.2f s\n", merged.scene.name.c_str(),
               merged.scene.width, merged.scene.height, merged.paths.label().c_str(),
@@ -167,6 +169,7 @@ void run_reference(const ReferenceArgs& args) {
   std::filesystem::path png = std::filesystem::path(out).replace_extension(".png");
   write_tone_mapped_png(png, image, scene.exposure);
   folder.keep();
+  if (args.quiet) return;  // errors alone
   double traced = pixels * budget.spp * (1.0 - render.started_share);
   std::string orders =
       scene.max_order > 0 ? fmt::format(", orders 1 to {}", scene.max_order) : "";
@@ -222,7 +225,7 @@ void add_reference_command(CLI::App& app) {
                   "Sum only the first N orders of scattering (1: single scattering alone; "
                   "default: every order); cached apart from the full ground truth");
   cmd->add_flag("--list", args->list, "List the canonical scenes");
-  cmd->add_flag("--quiet", args->quiet, "No progress line");
+  cmd->add_flag("--quiet", args->quiet, "Errors alone: no progress, no result lines");
   cmd->callback([args] { run_reference(*args); });
 }
 

@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 #include "core/tone_map.h"
+#include "lab/error_png.h"
 
 #include <fmt/format.h>
 
@@ -156,11 +157,11 @@ void write_accuracy_images(const std::filesystem::path& dir, const Scene& scene,
   write_exr(dir / (scene.name + "_reference.exr"), reference);
   write_tone_mapped_png(dir / (scene.name + "_reference.png"), enlarged(reference), scene.exposure);
   // The error image: |technique - reference| / mean reference, shown so
-  // that 10% of the mean is mid-grey-bright (exposure 5 through the curve).
+  // that 10% of the mean is mid-grey-bright, with its scale below it.
   ImageRGB error = accuracy.signed_error;
   for (float& v : error.pixels) v = std::abs(v);
   write_exr(dir / (scene.name + "_error.exr"), error);
-  write_tone_mapped_png(dir / (scene.name + "_error.png"), enlarged(error), 5.0);
+  write_error_png(dir / (scene.name + "_error.png"), error);
 }
 
 }  // namespace planet

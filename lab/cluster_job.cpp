@@ -150,12 +150,14 @@ std::string slurm_job_script(const ClusterJob& job) {
   return fmt::format(
       R"SH(#!/bin/bash
 # planet {command} on {tasks} tasks of a Slurm job array, then one merge.
-# Submit with: sbatch THIS_FILE
-# Task K runs the command with --shard K/{tasks}. Task 0 also queues the
-# merge job, {name}-merge: Slurm starts it once every
-# task has ended well (afterok), and it puts the shares together into the
-# output, byte for byte the run made on one machine. Rerun a failed task
-# with `sbatch --array=K THIS_FILE`, then the merge by hand:
+# Submit with: bash THIS_FILE   (where sbatch works, as on a login node)
+# It queues the array, then the merge job {name}-merge, which Slurm
+# holds until every task has ended well (afterok): the tasks themselves
+# queue nothing, so the compute nodes need no sbatch. Task K runs the
+# command with --shard K/{tasks}; the merge puts the shares together into
+# the output, byte for byte the run made on one machine. Rerun failed
+# tasks with `bash THIS_FILE K[,K...]`: they and a new merge are queued.
+# The merge by hand:
 #   {program} {merge_line}
 #SBATCH --job-name={name}
 #SBATCH --array=0-{last}
@@ -164,16 +166,28 @@ std::string slurm_job_script(const ClusterJob& job) {
 #SBATCH --output={name}-%A_%a.out
 {extra}set -euo pipefail
 planet={program}
-share=("$planet" {share_args} --shard "$SLURM_ARRAY_TASK_ID/{tasks}")
+share=("$planet" {share_args})
 merge=("$planet" {merge_args})
-if [ "$SLURM_ARRAY_TASK_ID" = 0 ]; then
-  merge_job=$(sbatch --parsable --job-name={name}-merge --chdir={workdir} \
-    --output={name}-merge-%j.out --cpus-per-task=1{merge_extra} \
-    --dependency=afterok:"$SLURM_ARRAY_JOB_ID" --kill-on-invalid-dep=yes \
-    --wrap="$(printf '%q ' "${{merge[@]}}")")
-  echo "planet: merge job $merge_job waits for job array $SLURM_ARRAY_JOB_ID"
+if [ "${{1:-}}" = --task ]; then
+  exec "${{share[@]}}" --shard "$SLURM_ARRAY_TASK_ID/{tasks}"
 fi
-exec "${{share[@]}}"
+if [ -n "${{SLURM_ARRAY_TASK_ID:-}}" ]; then
+  echo "planet: $0 queues its array and merge itself: run it with bash, not sbatch" >&2
+  exit 2
+fi
+tasks="${{1:-0-{last}}}"
+if ! [[ "$tasks" =~ ^[0-9]+(-[0-9]+)?(,[0-9]+(-[0-9]+)?)*$ ]]; then
+  echo "planet: $0: '$tasks' is not a list of tasks (K, K-L or K,L,...) of 0-{last}" >&2
+  exit 2
+fi
+array_job=$(sbatch --parsable --array="$tasks" "$0" --task)
+array_job=${{array_job%%;*}}  # "id;cluster" on a federation
+merge_job=$(sbatch --parsable --job-name={name}-merge --chdir={workdir} \
+  --output={name}-merge-%j.out --cpus-per-task=1{merge_extra} \
+  --dependency=afterok:"$array_job" --kill-on-invalid-dep=yes \
+  --wrap="$(printf '%q ' "${{merge[@]}}")")
+merge_job=${{merge_job%%;*}}
+echo "planet: job array $array_job (tasks $tasks) and merge job $merge_job, which waits for it"
 )SH",
       fmt::arg("command", job.command.front()), fmt::arg("tasks", job.tasks),
       fmt::arg("name", job.name), fmt::arg("last", job.tasks - 1),

@@ -31,8 +31,9 @@ struct ClusterJob {
 // `tasks` and the fields past it are left for the caller to fill.
 ClusterJob plan_cluster_job(const std::vector<std::string>& args, int tasks);
 
-// `sbatch` it: an array of `tasks` tasks whose task 0 also queues the
-// merge, held until every task has ended well (afterok).
+// Run it with bash where sbatch works: it queues an array of `tasks` tasks,
+// then the merge, held until every task has ended well (afterok). The
+// tasks queue nothing: compute nodes need no sbatch.
 std::string slurm_job_script(const ClusterJob& job);
 
 // `kubectl apply -f` it: an Indexed Job of `tasks` completions (pod K reads

@@ -10,13 +10,17 @@
 #include "lab/accuracy.h"
 #include "lab/color_difference.h"
 #include "lab/debiased_error.h"
+#include "lab/error_model_build.h"
+#include "lab/error_png.h"
 #include "lab/pareto.h"
 #include "lab/reference_cache.h"
 #include "lab/scene_render.h"
 #include "render/frame.h"
+#include "render/governor.h"
 
 #include <epoxy/gl.h>
 #include <fmt/format.h>
+#include <fmt/ranges.h>
 
 #include <algorithm>
 #include <cmath>
@@ -164,7 +168,7 @@ void measure_cell(const Scene& scene, const std::string& choice, const SceneTrut
   write_tone_mapped_png(image_stem.string() + "_technique.png", enlarged(image), scene.exposure);
   ImageRGB error = accuracy.signed_error;
   for (float& v : error.pixels) v = std::abs(v);
-  write_tone_mapped_png(image_stem.string() + "_error.png", enlarged(error), 5.0);
+  write_error_png(image_stem.string() + "_error.png", error);
 }
 
 // The geometric mean of positive values (0 where any is not).
@@ -208,6 +212,21 @@ Scene first_order_scene(Scene scene) {
 double SweepCell::error() const {
   return std::max({debiased[0], debiased[1], debiased[2]});
 }
+
+namespace {
+size_t worst_channel(const SweepCell& c) {
+  return size_t(std::max_element(c.debiased.begin(), c.debiased.end()) - c.debiased.begin());
+}
+
+// The point as the fronts weigh it: its time with its frames' spread, its
+// error with its interval.
+CostError cost_error(const SweepCell& c) {
+  return {c.wall_ms, c.error(), c.wall_spread_ms, c.error_low(), c.error_high()};
+}
+}  // namespace
+
+double SweepCell::error_low() const { return debiased_low[worst_channel(*this)]; }
+double SweepCell::error_high() const { return debiased_high[worst_channel(*this)]; }
 
 SweepPlan plan_sweep(const SweepOptions& o) {
   if (o.frames < 1 || o.frames > 1000) {
@@ -269,7 +288,8 @@ nlohmann::json cell_to_json(const SweepCell& c) {
           {"single_error", c.split ? nlohmann::json(c.single_error) : nlohmann::json()},
           {"higher_error", c.split ? nlohmann::json(c.higher_error) : nlohmann::json()},
           {"error", c.error()},
-          {"on_front", c.on_front}};
+          {"on_front", c.on_front},
+          {"time_ties", c.time_ties}};
 }
 
 SweepCell cell_from_json(const nlohmann::json& j, const std::string& file) {
@@ -314,6 +334,58 @@ SweepCell read_sweep_cell(const std::filesystem::path& file) {
                                  file.string(), e.what()));
   }
   return cell_from_json(j, file.string());
+}
+
+std::vector<ProgressPart> sweep_cell_costs(const SweepOptions& o, const SweepPlan& plan) {
+  // The shipped table's times per choice, ms: the mean frame over its
+  // scenes at its time size, and the model change. Without the table every
+  // cell weighs the same until cells of its kind are timed.
+  std::map<std::string, std::pair<double, int>> frames;
+  std::map<std::string, double> changes;
+  double pixels_ratio = 1;
+  try {
+    ErrorModel table = load_error_model(shipped_error_model_file());
+    for (const ViewClass& view : table.classes) {
+      for (const ErrorModelEntry& entry : view.entries) {
+        frames[entry.choice].first += entry.frame_ms;
+        frames[entry.choice].second += 1;
+      }
+    }
+    changes = table.model_change_ms;
+    if (table.time_width > 0 && table.time_height > 0) {
+      pixels_ratio =
+          double(o.time_width) * o.time_height / (double(table.time_width) * table.time_height);
+    }
+  } catch (const std::exception&) {
+    frames.clear();
+    changes.clear();
+  }
+  // A cell's own work beside its frames and tables: two renderers made,
+  // two renders at the accuracy size measured, its images written; about
+  // a second here (hillaire's cells took 2 s in all, their frames and
+  // tables taking the rest at the table's times, slowed by other work).
+  constexpr double kCellFixedMs = 1000;
+  std::vector<ProgressPart> parts;
+  for (const Scene& scene : plan.scenes) {
+    for (const auto& [technique, quality] : plan.points) {
+      std::string choice = governor_choice(technique, quality);
+      double prior = 1;
+      if (!frames.empty()) {
+        auto frame = frames.find(choice);
+        auto change = changes.find(choice);
+        double frame_ms = frame != frames.end() ? frame->second.first / frame->second.second : 0;
+        double change_ms = change != changes.end() ? change->second : 0;
+        // The frames timed and the one before them; the tables of the timed
+        // technique and of its single scattering.
+        prior = kCellFixedMs + (o.frames + 1) * frame_ms * pixels_ratio + 2 * change_ms;
+      }
+      if (!o.redo && std::filesystem::exists(cell_file(o, scene.name, technique, quality))) {
+        prior = 0;
+      }
+      parts.push_back({choice, prior});
+    }
+  }
+  return parts;
 }
 
 std::vector<SweepCell> run_sweep(const SweepOptions& o, const SweepPlan& plan,
@@ -367,34 +439,65 @@ std::vector<SweepCell> run_sweep(const SweepOptions& o, const SweepPlan& plan,
   }
   if (progress) progress(done, total, "");
 
-  // The fronts: per scene, and over the scenes' geometric means.
+  // The fronts: per scene, and over the scenes' geometric means; points
+  // within each other's noise tie (pareto.h).
+  auto point_name = [](const std::string& technique, const std::string& quality) {
+    return technique + ":" + quality;
+  };
   std::map<std::string, std::vector<size_t>> by_scene;
   for (size_t i = 0; i < cells.size(); ++i) by_scene[cells[i].scene].push_back(i);
   for (auto& [scene, indices] : by_scene) {
     std::vector<CostError> points;
-    for (size_t i : indices) points.push_back({cells[i].wall_ms, cells[i].error()});
+    for (size_t i : indices) points.push_back(cost_error(cells[i]));
     std::vector<bool> on = pareto_front(points);
-    for (size_t k = 0; k < indices.size(); ++k) cells[indices[k]].on_front = on[k];
+    std::vector<std::vector<size_t>> ties = cost_ties(points);
+    for (size_t k = 0; k < indices.size(); ++k) {
+      SweepCell& cell = cells[indices[k]];
+      cell.on_front = on[k];
+      cell.time_ties.clear();
+      for (size_t t : ties[k]) {
+        cell.time_ties.push_back(
+            point_name(cells[indices[t]].technique, cells[indices[t]].quality));
+      }
+    }
   }
   nlohmann::json overall = nlohmann::json::array();
   std::vector<CostError> overall_points;
   for (const auto& [technique, quality] : plan.points) {
-    std::vector<double> times, errors;
+    std::vector<double> times, errors, lows, highs;
+    double relative_spread = 0;
     for (const SweepCell& c : cells) {
       if (c.technique == technique && c.quality == quality) {
         times.push_back(c.wall_ms);
         errors.push_back(c.error());
+        lows.push_back(c.error_low());
+        highs.push_back(c.error_high());
+        relative_spread += c.wall_ms > 0 ? c.wall_spread_ms / c.wall_ms : 0.0;
       }
     }
-    overall_points.push_back({geometric_mean(times), geometric_mean(errors)});
+    // The spread of the mean time: the cells' mean spread relative to
+    // their times, at the mean time.
+    double time = geometric_mean(times);
+    double spread = times.empty() ? 0.0 : time * relative_spread / double(times.size());
+    overall_points.push_back(
+        {time, geometric_mean(errors), spread, geometric_mean(lows), geometric_mean(highs)});
     overall.push_back({{"technique", technique},
                        {"quality", quality},
                        {"choice", choice_of(technique, quality)},
                        {"wall_ms", overall_points.back().cost},
+                       {"wall_spread_ms", spread},
                        {"error", overall_points.back().error}});
   }
   std::vector<bool> overall_on = pareto_front(overall_points);
-  for (size_t i = 0; i < overall.size(); ++i) overall[i]["on_front"] = bool(overall_on[i]);
+  std::vector<std::vector<size_t>> overall_ties = cost_ties(overall_points);
+  for (size_t i = 0; i < overall.size(); ++i) {
+    overall[i]["on_front"] = bool(overall_on[i]);
+    std::vector<std::string> ties;
+    for (size_t t : overall_ties[i]) {
+      ties.push_back(point_name(plan.points[t].first, plan.points[t].second));
+    }
+    overall[i]["time_ties"] = ties;
+  }
 
   nlohmann::json results = {
       {"planet", planet_version()},
@@ -404,6 +507,11 @@ std::vector<SweepCell> run_sweep(const SweepOptions& o, const SweepPlan& plan,
       {"accuracy_size", {o.width, o.height}},
       {"frames", o.frames},
       {"cost", "wall_ms: the atmosphere's passes per frame, synchronous, median of the frames"},
+      {"ties",
+       "time_ties: the points whose wall_ms ties with its own: their wall_spread_ms (max - min "
+       "of the frames), each centred on its wall_ms, overlap; on the fronts a point is off only "
+       "where another is as cheap and as accurate within the spreads and the errors' 95 % "
+       "intervals, and better beyond them on one"},
       {"error", "the worst channel's relative RMSE against the ground truth, its noise taken out"},
       {"split",
        "single_error: the technique's first order against the ground truth's; higher_error: the "
@@ -417,7 +525,7 @@ std::vector<SweepCell> run_sweep(const SweepOptions& o, const SweepPlan& plan,
       "scene,technique,quality,choice,wall_ms,wall_spread_ms,gpu_ms,rel_rmse_r,rel_rmse_g,"
       "rel_rmse_b,debiased_r,debiased_g,debiased_b,debiased_low_r,debiased_low_g,debiased_low_b,"
       "debiased_high_r,debiased_high_g,debiased_high_b,worst_pixel,ciede2000,error,on_front,"
-      "single_r,single_g,single_b,higher_r,higher_g,higher_b\n";
+      "single_r,single_g,single_b,higher_r,higher_g,higher_b,time_ties\n";
   for (const SweepCell& c : cells) {
     csv += fmt::format("{},{},{},\"{}\",{:.4f},{:.4f},{:.4f}", c.scene, c.technique, c.quality,
                        c.choice, c.wall_ms, c.wall_spread_ms, c.gpu_ms);
@@ -429,7 +537,7 @@ std::vector<SweepCell> run_sweep(const SweepOptions& o, const SweepPlan& plan,
     for (const auto* v : {&c.single_error, &c.higher_error}) {
       for (double x : *v) csv += c.split ? fmt::format(",{:.6f}", x) : std::string(",");
     }
-    csv += "\n";
+    csv += fmt::format(",\"{}\"\n", fmt::join(c.time_ties, ";"));
   }
   write_file_atomically(o.out / "results.csv", csv);
   return cells;

@@ -7,6 +7,7 @@
 // finish, so that a sweep stopped part-way goes on where it stopped; the
 // fronts and tables are made from whatever cells are there.
 #include <nlohmann/json.hpp>
+#include "core/progress.h"
 #include "lab/scene.h"
 
 #include <array>
@@ -50,7 +51,12 @@ struct SweepCell {
   std::array<double, 3> single_error{}, higher_error{};
   bool split = false;                      // the two above were measured
   double error() const;                    // the worst channel's debiased relative RMSE
+  double error_low() const, error_high() const;  // that channel's 95 % interval
   bool on_front = false;                   // of its scene
+  // The scene's other points ("technique:quality") whose time ties with
+  // its own (their frames' spreads, centred on the times, overlap): which
+  // is the faster, the frames do not tell.
+  std::vector<std::string> time_ties;
   bool kept = false;                       // read from an earlier run, not timed now
 };
 
@@ -75,6 +81,14 @@ PathBudget sweep_reference_budget(const SweepOptions& options, const Scene& scen
 // The scene's ground truth's first order (single scattering), which the
 // sweep splits each cell's error by.
 Scene first_order_scene(Scene scene);
+
+// What the progress line's time left weighs each cell by, in the plan's
+// order: its kind (technique:quality, whose finished cells tell the time of
+// the others), and a prior cost from the shipped governor's table (the
+// choice's frame time over the timed frames, its model change for the
+// tables the cell builds, and a fixed part); 0 for a cell kept from an
+// earlier run.
+std::vector<ProgressPart> sweep_cell_costs(const SweepOptions& options, const SweepPlan& plan);
 
 // Runs the cells not yet done (all with redo), then writes results.json,
 // results.csv and the cells' images under options.out. Needs a GL context.

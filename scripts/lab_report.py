@@ -9,7 +9,8 @@ quality), the Pareto front as a line; and OUT/report.html, one page with
 everything in it (the charts and images inline, no network): the charts,
 a sentence per scene naming the cheapest technique within 1, 2 and 5 %, the
 table of cells, and the technique / ground truth / error images of every
-point on a front; and OUT/orders.{png,svg}: each (technique, quality)'s
+point on a front; points whose times tie (their frames' spreads, centred on
+them, overlap) are said to tie, never ranked; and OUT/orders.{png,svg}: each (technique, quality)'s
 error split into its first order and the orders above it. Where
 OUT/stability holds planet lab stability's report, the page links it and
 shows its line plots; where OUT/measured holds planet lab measured's, the
@@ -69,10 +70,22 @@ def finish(fig, ax, stem):
     plt.close(fig)
 
 
+def name(p):
+    return f'{p["technique"]}:{p["quality"]}'
+
+
 def chart(points, title, stem, style):
     fig, ax = plt.subplots(figsize=(7.5, 4.8), dpi=100)
     for p in points:
         colour, marker = style[(p["technique"], p["quality"])]
+        spread = p.get("wall_spread_ms", 0)
+        if spread > 0:
+            # The frames' spread as a bar through the point: points whose
+            # bars reach each other's tie in time.
+            half = spread / 2
+            ax.errorbar(p["wall_ms"], max(p["error"], FLOOR),
+                        xerr=[[min(half, 0.9 * p["wall_ms"])], [half]], fmt="none",
+                        ecolor=colour, elinewidth=0.9, alpha=0.7, capsize=2, zorder=2)
         ax.scatter(p["wall_ms"], max(p["error"], FLOOR), color=colour, marker=marker, s=46,
                    label=f'{p["technique"]}:{p["quality"]}', zorder=3,
                    edgecolors="black" if p["on_front"] else "none")
@@ -97,7 +110,7 @@ def chart(points, title, stem, style):
     ax.xaxis.set_minor_formatter(label_ms if max(ms) < 10 * min(ms) else blank)
     ax.yaxis.set_minor_formatter(label_error if max(errors) < 10 * min(errors) else blank)
     ax.tick_params(axis="both", which="minor", labelsize=7)
-    ax.set_xlabel("time per frame, ms (the atmosphere's passes)")
+    ax.set_xlabel("time per frame, ms (the atmosphere's passes; bars: the frames' spread)")
     ax.set_ylabel("error (worst channel's relative RMSE)")
     ax.set_title(title)
     finish(fig, ax, stem)
@@ -160,10 +173,42 @@ def inline_png(path):
 
 
 def cheapest_within(cells, budget):
+    """The cheapest cell within the budget, and the others within it whose
+    time ties with its own: no one of them is the cheapest."""
     fitting = [c for c in cells if c["error"] <= budget]
     if not fitting:
-        return None
-    return min(fitting, key=lambda c: c["wall_ms"])
+        return None, []
+    best = min(fitting, key=lambda c: c["wall_ms"])
+    ties = set(best.get("time_ties", []))
+    return best, sorted((c for c in fitting if name(c) in ties), key=lambda c: c["wall_ms"])
+
+
+def tie_groups(points):
+    """Points sorted by time, in groups of those whose times tie with one of
+    the group's."""
+    groups = []
+    for p in sorted(points, key=lambda p: p["wall_ms"]):
+        if groups and any(name(q) in p.get("time_ties", []) for q in groups[-1]):
+            groups[-1].append(p)
+        else:
+            groups.append([p])
+    return groups
+
+
+def figures(p):
+    return f'{html.escape(name(p))} ({p["wall_ms"]:.3g} ms, {percent(p["error"])} %)'
+
+
+def said_in_order(points):
+    """The points from the cheapest, those whose times tie said to tie."""
+    parts = []
+    for group in tie_groups(points):
+        if len(group) == 1:
+            parts.append(figures(group[0]))
+        else:
+            parts.append(", ".join(figures(p) for p in group[:-1]) + " and " +
+                         figures(group[-1]) + ", which tie in time")
+    return "; then ".join(parts)
 
 
 def percent(x):
@@ -213,9 +258,12 @@ def main():
         f'<div class="chart" id="chart-overall">{inline_png(os.path.join(out, "pareto_overall.png"))}</div>',
     ]
     front = [p for p in results["overall"] if p["on_front"]]
-    parts.append("<p>On the overall front, from the cheapest: " + ", ".join(
-        f'{e(p["technique"])}:{e(p["quality"])} ({p["wall_ms"]:.3g} ms, {percent(p["error"])} %)'
-        for p in sorted(front, key=lambda p: p["wall_ms"])) + ".</p>")
+    parts.append(f'<p id="front-overall">On the overall front, from the cheapest: '
+                 f'{said_in_order(front)}.</p>'
+                 "<p>Two points tie in time where their frames' spreads, each centred on its "
+                 "time, overlap (the bars on the charts); a point is off a front only where "
+                 "another is as fast and as accurate within that noise (and the errors' 95 % "
+                 "intervals), and better beyond it in one.</p>")
     if split:
         parts.append("<h2>Where the error comes from</h2><p>Each point's error split by order "
                      "(the worst channel's debiased relative RMSE, geometric means over the "
@@ -258,30 +306,33 @@ def main():
         parts.append(f"<h2>{e(scene)}</h2>")
         sentences = []
         for budget in (0.01, 0.02, 0.05):
-            c = cheapest_within(here, budget)
-            sentences.append(
-                f"within {100 * budget:g} %: {e(c['technique'])}:{e(c['quality'])} "
-                f"({c['wall_ms']:.3g} ms, {percent(c['error'])} %)" if c else
-                f"within {100 * budget:g} %: none")
-        parts.append("<p>Cheapest " + "; ".join(sentences) + ".</p>")
+            c, ties = cheapest_within(here, budget)
+            tied = (", tied in time with " + " and ".join(figures(t) for t in ties)) if ties else ""
+            sentences.append(f"within {100 * budget:g} %: {figures(c)}{tied}" if c else
+                             f"within {100 * budget:g} %: none")
+        parts.append(f'<p id="cheapest-{e(scene)}">Cheapest ' + "; ".join(sentences) + ".</p>")
         parts.append(f'<div class="chart">{inline_png(os.path.join(out, f"pareto_{scene}.png"))}</div>')
         for c in sorted((c for c in here if c["on_front"]), key=lambda c: c["wall_ms"]):
             stem = os.path.join(out, "cells", scene, f'{c["technique"]}-{c["quality"]}')
+            tied = c.get("time_ties", [])
+            tied = f' (ties in time with {e(", ".join(tied))})' if tied else ""
             parts.append(
                 f'<p class="triplet">{e(c["technique"])}:{e(c["quality"])}, '
-                f'{c["wall_ms"]:.3g} ms, {percent(c["error"])} %<br>'
+                f'{c["wall_ms"]:.3g} ms, {percent(c["error"])} %{tied}<br>'
                 f'{inline_png(stem + "_technique.png")}'
                 f'{inline_png(os.path.join(out, "cells", scene, "reference.png"))}'
                 f'{inline_png(stem + "_error.png")}</p>')
     parts.append("<h2>Every cell</h2><p>Relative RMSE per channel in %, R / G / B: plain (the "
                  "reference's noise in it) and debiased with its 95 % interval; the debiased "
                  "error of its single scattering and of the orders above; the worst "
-                 "pixel's relative error; the mean CIEDE2000 of the tone-mapped images. Rows "
-                 "on their scene's front are shaded.</p>")
+                 "pixel's relative error; the mean CIEDE2000 of the tone-mapped images; the "
+                 "points of its scene whose time ties with its own. Rows on their scene's "
+                 "front are shaded.</p>")
     parts.append('<table id="cells"><thead><tr><th class="l">scene</th><th class="l">technique'
                  '</th><th class="l">quality</th><th>ms</th><th>spread ms</th><th>plain %</th>'
                  '<th>debiased % [95 %]</th><th>single %</th><th>higher orders %</th>'
-                 '<th>worst pixel %</th><th>CIEDE2000</th></tr></thead>'
+                 '<th>worst pixel %</th><th>CIEDE2000</th><th class="l">ties in time with</th>'
+                 '</tr></thead>'
                  '<tbody>')
     for c in cells:
         debiased = " / ".join(
@@ -294,7 +345,8 @@ def main():
             f'<td>{c["wall_ms"]:.3g}</td><td>{c["wall_spread_ms"]:.2g}</td>'
             f'<td>{" / ".join(percent(v) for v in c["relative_rmse"])}</td><td>{debiased}</td>'
             f'<td>{by_order(c, "single_error")}</td><td>{by_order(c, "higher_error")}</td>'
-            f'<td>{percent(c["worst_pixel"])}</td><td>{c["ciede2000"]:.2f}</td></tr>')
+            f'<td>{percent(c["worst_pixel"])}</td><td>{c["ciede2000"]:.2f}</td>'
+            f'<td class="l">{e(", ".join(c.get("time_ties", [])))}</td></tr>')
     parts.append("</tbody></table></body></html>")
     path = os.path.join(out, "report.html")
     with open(path + ".part", "w", encoding="utf-8") as f:

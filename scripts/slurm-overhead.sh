@@ -22,18 +22,22 @@ t0=$(now); $planet "${ref[@]}" --out single/noon.exr > /dev/null; t1=$(now)
 $planet "${cap[@]}" --out single/capture; t2=$(now)
 $planet cluster slurm --tasks 4 "${ref[@]}" --out c/noon.exr --script ref.sh > /dev/null
 $planet cluster slurm --tasks 4 "${cap[@]}" --out c/capture --script cap.sh > /dev/null
-wait_merge() {  # wait_merge OUTPUT_PREFIX: until the merge job named in task 0's output ends
-  local job=""
+wait_merge() {  # wait_merge JOB: until the merge job JOB ends
+  local job=$1
   for _ in $(seq 1 600); do
-    [ -n "$job" ] || job=$(grep -ho 'merge job [0-9]*' "$1"-*_0.out 2> /dev/null | awk '{print $3}')
-    if [ -n "$job" ] && scontrol show job "$job" | grep -q 'JobState=COMPLETED'; then echo "$job"; return; fi
+    if scontrol show job "$job" | grep -q 'JobState=COMPLETED'; then echo "$job"; return; fi
     sleep 0.2
   done
   echo "timeout" >&2; exit 1
 }
-t3=$(now); a=$(sbatch --parsable ref.sh); m=$(wait_merge planet-reference-earth-noon); t4=$(now)
+# The scripts queue their array and its merge job themselves, and say their ids.
+submit() {
+  local said; said=$(bash "$1")
+  echo "$(grep -o 'job array [0-9]*' <<< "$said" | cut -d' ' -f3) $(grep -o 'merge job [0-9]*' <<< "$said" | cut -d' ' -f3)"
+}
+t3=$(now); read -r a m < <(submit ref.sh); wait_merge "$m" > /dev/null; t4=$(now)
 cmp single/noon.exr c/noon.exr
-t5=$(now); b=$(sbatch --parsable cap.sh); n=$(wait_merge planet-capture-flight); t6=$(now)
+t5=$(now); read -r b n < <(submit cap.sh); wait_merge "$n" > /dev/null; t6=$(now)
 for f in single/capture/frame_*.exr; do cmp $f c/capture/$(basename $f); done
 awk -v a=$t0 -v b=$t1 -v c=$t2 -v d=$t3 -v e=$t4 -v f=$t5 -v g=$t6 'BEGIN {
   printf "reference 8x4 256 spp: at once %.1f s, 4-task array + merge %.1f s\n", b - a, e - d

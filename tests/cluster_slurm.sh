@@ -2,8 +2,10 @@
 # planet on a real Slurm, as a user runs it there: a one-node cluster on
 # this machine (scripts/slurm-one-node.sh), the job-array scripts that
 # `planet cluster slurm --tasks 4` writes for a small reference and a short
-# capture, submitted with sbatch; once their dependent merge jobs are done,
-# the merged outputs must be byte for byte the runs made at once here.
+# capture, run with bash on the submitting side, which queues each array and
+# its merge job; sbatch fails inside a job here (as on compute nodes that
+# lack it), so nothing may be queued from a task. Once the merge jobs are
+# done, the merged outputs must be byte for byte the runs made at once here.
 # Skipped (exit 77, with the reason) where the daemons cannot start.
 set -uo pipefail
 planet="$1"; source_dir="$2"; flight="$3"; work="$4"
@@ -22,6 +24,18 @@ fi
 trap '"$source_dir/scripts/slurm-one-node.sh" stop "$cluster"' EXIT
 [ "$rc" -eq 0 ] || { echo "FAIL: the cluster did not start (exit $rc):"; cat "$work/start_err.txt"; exit 1; }
 export SLURM_CONF="$cluster/slurm.conf"
+# sbatch as a compute node without it has it: refused inside any job.
+real_sbatch=$(command -v sbatch)
+mkdir -p "$work/bin"
+cat > "$work/bin/sbatch" << SH
+#!/bin/bash
+if [ -n "\${SLURM_JOB_ID:-}" ]; then
+  echo "sbatch: not on a compute node (job \$SLURM_JOB_ID)" >&2; exit 1
+fi
+exec "$real_sbatch" "\$@"
+SH
+chmod +x "$work/bin/sbatch"
+export PATH="$work/bin:$PATH"
 export PLANET_CACHE_DIR="$work/cache"
 echo "one-node Slurm up in $(($(date +%s) - begin)) s: $(sinfo -h -o '%P %D %T %N')"
 
@@ -46,18 +60,17 @@ single_end=$(date +%s.%N)
 grep -q -- '--array=0-3' ref_job.sh || { echo "FAIL: no 4-task array in ref_job.sh"; exit 1; }
 mkdir -p cluster
 submitted=$(date +%s.%N)
-ref_array=$(sbatch --parsable ref_job.sh) || { echo "FAIL: sbatch ref_job.sh"; exit 1; }
-capture_array=$(sbatch --parsable capture_job.sh) || { echo "FAIL: sbatch capture_job.sh"; exit 1; }
-echo "submitted reference array $ref_array and capture array $capture_array"
+bash ref_job.sh > ref_submit.txt 2>&1 || { echo "FAIL: bash ref_job.sh: $(cat ref_submit.txt)"; exit 1; }
+bash capture_job.sh > capture_submit.txt 2>&1 ||
+  { echo "FAIL: bash capture_job.sh: $(cat capture_submit.txt)"; exit 1; }
+cat ref_submit.txt capture_submit.txt
 
-# Task 0 of each array names its merge job; wait for both to end, at most
+# The submitting side names each merge job; wait for both to end, at most
 # 120 s, saying what is still queued every 5 s.
 state() { scontrol show job "$1" 2> /dev/null | grep -o 'JobState=[A-Z_]*' | head -1 | cut -d= -f2; }
-merge_job() { grep -ho 'merge job [0-9]*' "$1"-*_0.out 2> /dev/null | awk '{print $3}'; }
-ref_merge=""; capture_merge=""
+merge_job() { grep -o 'merge job [0-9]*' "$1" | awk '{print $3}'; }
+ref_merge=$(merge_job ref_submit.txt); capture_merge=$(merge_job capture_submit.txt)
 for i in $(seq 1 240); do
-  [ -n "$ref_merge" ] || ref_merge=$(merge_job planet-reference-earth-noon)
-  [ -n "$capture_merge" ] || capture_merge=$(merge_job planet-capture-flight)
   done_count=0
   for job in "$ref_merge" "$capture_merge"; do
     case "$(state "${job:-none}")" in

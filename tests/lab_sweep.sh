@@ -56,6 +56,13 @@ for c in cells:
         assert max(c["single_error"]) < 0.25 * c["error"] < max(c["higher_error"]), c
 assert any(c["on_front"] for c in cells if c["scene"] == "earth_noon")
 assert len(r["overall"]) == 4 and r["renderer"] and r["commit"]
+# Points whose frames' spreads, centred on their times, overlap tie in time.
+for a in cells:
+    for b in cells:
+        if a is not b and a["scene"] == b["scene"]:
+            tie = abs(a["wall_ms"] - b["wall_ms"]) <= 0.5 * (a["wall_spread_ms"] + b["wall_spread_ms"])
+            assert (f'{b["technique"]}:{b["quality"]}' in a["time_ties"]) == tie, (a, b)
+assert all("time_ties" in p and "wall_spread_ms" in p for p in r["overall"])
 PY
 # Again: every cell kept, none timed, the same tables.
 cp "$work/lab/results.csv" "$work/first.csv"

@@ -70,7 +70,7 @@ sweep cut; wait "$pid" || { echo "FAIL: the last run failed: $(cat "$work/cut.tx
 grep -q "2 cells (" "$work/cut.txt" || fail "the last run said: $(cat "$work/cut.txt")"
 "$python" - "$work/whole/lab" "$work/cut/lab" << 'PY' || fail "the finished sweep's figures differ"
 import csv, sys
-timing = {"wall_ms", "wall_spread_ms", "gpu_ms", "on_front"}
+timing = {"wall_ms", "wall_spread_ms", "gpu_ms", "on_front", "time_ties"}
 rows = lambda d: [{k: v for k, v in r.items() if k not in timing}
                   for r in csv.DictReader(open(f"{d}/results.csv"))]
 a, b = rows(sys.argv[1]), rows(sys.argv[2])
