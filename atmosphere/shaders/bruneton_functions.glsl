@@ -1,14 +1,14 @@
 // Bruneton and Neyret 2008, "Precomputed Atmospheric Scattering", as Bruneton
 // reworked it in 2017: transmittance (2D), single and multiple scattering in
 // 4D over (r, mu, mu_s, nu) packed in a 3D texture, and the ground's
-// irradiance (2D), each order of scattering from the one before. Written
-// in the common subset of GLSL and C++-with-GLM (see definitions.glsl), but
-// compiled only as GLSL, by the passes of atmosphere/gpu/bruneton (through
-// bruneton_common.glsl), after the shared math: no C++ build of it exists,
-// and the technique is tested on its images (tests/atmosphere/
-// bruneton_gl_test.cpp: one order against a brute-force march) and against
-// the ground truth, not function by function on the CPU as the shared math
-// is (shared_math_gl_test.cpp).
+// irradiance (2D), each order of scattering from the one before. In the
+// common subset of GLSL and C++-with-GLM (see definitions.glsl): the passes
+// of atmosphere/gpu/bruneton compile this same file after the shared math
+// (bruneton_common.glsl), and so does, as C++ in double, the test that
+// checks the tables' parameterisations against the GPU's
+// (tests/atmosphere/bruneton_functions_gl_test.cpp); no CPU code reads the
+// tables, so the functions that sample them are tested on the technique's
+// images (tests/atmosphere/bruneton_gl_test.cpp) alone.
 //
 // The including side defines Real4 and the texture types Table2D and
 // Table3D (sampler2D and sampler3D on the GPU) with texture(table, uv)
