@@ -1,5 +1,7 @@
 #pragma once
-// C++ mirror of the std140 block in atmosphere/shaders/atmosphere_block.glsl.
+// C++ mirror of the std140 block in atmosphere/shaders/atmosphere_block.glsl:
+// the shared Atmosphere (atmosphere/shaders/definitions.glsl) in float,
+// packed four to a vec4.
 #include "atmosphere/model.h"
 
 #include <glm/glm.hpp>
@@ -26,6 +28,8 @@ static_assert(offsetof(AtmosphereBlock, layer_b) == 13 * 16);
 // Binding point of the block in every shader that includes it.
 constexpr unsigned kAtmosphereBlockBinding = 0;
 
+// The model's one way onto the GPU: shared::to_shared packed, which
+// block_atmosphere() in the shaders unpacks field for field.
 AtmosphereBlock make_atmosphere_block(const AtmosphereModel& model);
 
 }  // namespace planet

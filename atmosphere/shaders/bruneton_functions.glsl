@@ -3,8 +3,12 @@
 // 4D over (r, mu, mu_s, nu) packed in a 3D texture, and the ground's
 // irradiance (2D), each order of scattering from the one before. In the
 // common subset of GLSL and C++-with-GLM (see definitions.glsl): the passes
-// of atmosphere/gpu/bruneton and the CPU tests (atmosphere/math/
-// bruneton_math.cpp) compile this same file, after the shared math.
+// of atmosphere/gpu/bruneton compile this same file after the shared math
+// (bruneton_common.glsl), and so does, as C++ in double, the test that
+// checks the tables' parameterisations against the GPU's
+// (tests/atmosphere/bruneton_functions_gl_test.cpp); no CPU code reads the
+// tables, so the functions that sample them are tested on the technique's
+// images (tests/atmosphere/bruneton_gl_test.cpp) alone.
 //
 // The including side defines Real4 and the texture types Table2D and
 // Table3D (sampler2D and sampler3D on the GPU) with texture(table, uv)

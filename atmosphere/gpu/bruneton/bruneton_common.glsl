@@ -1,7 +1,7 @@
 // What every pass of the bruneton technique shares: the model's block, the
 // tables' types and sizes (set as defines by the technique from its
 // quality), and Bruneton's functions (atmosphere/shaders/
-// bruneton_functions.glsl, also compiled on the CPU).
+// bruneton_functions.glsl).
 #include "atmosphere/shaders/atmosphere_block.glsl"
 
 #define Real4 vec4
