@@ -415,6 +415,21 @@ FrameStats FrameRenderer::render(const Camera& camera, const glm::dvec3& sun_dir
   tonemap_pass_.draw();
   timer_.end();
 
+  if (smooth_edges_) {
+    timer_.begin("smooth_edges");
+    if (!ldr_unsmoothed_.id()) {
+      ldr_unsmoothed_ = make_texture_2d(GL_RGBA8, width_, height_);
+      smooth_edges_program_ =
+          Program::graphics("gl/shaders/fullscreen.vert", "render/shaders/smooth_edges.frag");
+    }
+    glCopyImageSubData(ldr_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, ldr_unsmoothed_.id(), GL_TEXTURE_2D, 0,
+                       0, 0, 0, width_, height_, 1);
+    tonemap_pass_.begin(ldr_fbo_.id(), width_, height_, smooth_edges_program_);
+    glBindTextureUnit(0, ldr_unsmoothed_.id());
+    tonemap_pass_.draw();
+    timer_.end();
+  }
+
   FrameStats stats;
   stats.passes = timer_.collect();
   check_gl_errors("FrameRenderer::render");

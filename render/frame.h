@@ -69,6 +69,11 @@ class FrameRenderer {
   // open sky beside it. SystemError for a count the GL cannot give.
   void set_antialiasing(int samples);
   int antialiasing() const { return samples_; }
+  // The tone-mapped image's edges smoothed (FXAA, render/shaders/
+  // smooth_edges.frag), off by default: for a window on a GL where
+  // multisampling costs too much (llvmpipe), in its place.
+  void set_smooth_edges(bool on) { smooth_edges_ = on; }
+  bool smooth_edges() const { return smooth_edges_; }
 
   // Terrain settings, taken by the next set_body.
   void set_terrain_options(const TerrainOptions& options) { terrain_options_ = options; }
@@ -211,6 +216,9 @@ class FrameRenderer {
   Program exposure_program_;
   Buffer exposure_block_;
   bool glare_ = false;
+  bool smooth_edges_ = false;
+  Texture ldr_unsmoothed_;  // the tone map's, made on the first smoothing
+  Program smooth_edges_program_;
   // Half the frame's size and down by halves, made on the first glare.
   std::vector<Texture> glare_down_, glare_up_;
   std::vector<Framebuffer> glare_down_fbo_, glare_up_fbo_;
