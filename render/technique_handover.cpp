@@ -33,6 +33,7 @@ bool TechniqueHandover::advance(double real_dt, double seconds) {
   if (next_) {
     ++frames_;
     longest_frame_ = std::max(longest_frame_, real_dt);
+    wall_seconds_ += real_dt;
   }
   const auto began = std::chrono::steady_clock::now();
   auto elapsed = [&] {
@@ -51,6 +52,8 @@ bool TechniqueHandover::advance(double real_dt, double seconds) {
   } while (!done && elapsed() < seconds);
   build_seconds_ += elapsed();
   if (!done) return false;
+  // The interval from the last frame to this swap.
+  wall_seconds_ += elapsed();
   build_.reset();
   previous_ = renderer_.swap_technique(std::move(next_));
   built_ = true;
@@ -66,7 +69,7 @@ double TechniqueHandover::fraction() const {
 
 std::string TechniqueHandover::status() const {
   if (built_) return fmt::format("fading to {}", choice_);
-  if (!build_) return fmt::format("building {}: its programs", choice_);
+  if (!build_) return fmt::format("building {} 0 %: its programs", choice_);
   return fmt::format("building {} {:.0f} %: {}", choice_, std::floor(100.0 * fraction()),
                      build_->what());
 }

@@ -40,8 +40,10 @@ class TechniqueHandover {
   // bruneton 37 %: order 2 of 4", "fading to bruneton").
   double fraction() const;
   std::string status() const;
-  // Of the build: its wall time, the frames drawn while it ran and the
-  // longest time between two of them (the build's slices included).
+  // Of the build: its wall time, the part of it spent building (the rest
+  // drew frames), the frames drawn while it ran and the longest time
+  // between two of them (the build's slices included).
+  double wall_seconds() const { return wall_seconds_; }
   double build_seconds() const { return build_seconds_; }
   int frames_while_building() const { return frames_; }
   double longest_frame_seconds() const { return longest_frame_; }
@@ -54,7 +56,7 @@ class TechniqueHandover {
   std::unique_ptr<TableBuild> build_;
   bool built_ = false;
   double fade_left_ = 0;
-  double build_seconds_ = 0, longest_frame_ = 0;
+  double wall_seconds_ = 0, build_seconds_ = 0, longest_frame_ = 0;
   int frames_ = 0;
 };
 

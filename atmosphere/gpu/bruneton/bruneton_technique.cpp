@@ -216,7 +216,7 @@ class BrunetonTechnique::Build final : public TableBuild {
 
   // The precompute's programs, by file and defines.
   void compile(const std::string& name, const char* file, std::vector<std::string> more = {}) {
-    add("compiling its programs", done_at_, [this, name, file, more] {
+    add("its programs", done_at_, [this, name, file, more] {
       programs_[name] =
           Program::compute(std::string("atmosphere/gpu/bruneton/") + file, t_.defines(more));
     });
@@ -311,14 +311,14 @@ void BrunetonTechnique::Build::begin() {
     t_.from_cache_ = true;
     t_.precompute_seconds_.clear();
     total_ = 1;
-    add("the ground's sky light", 1, [this] { end(); });
+    add("its ground light", 1, [this] { end(); });
     return;
   }
   t_.from_cache_ = false;
   total_ = s_.orders;
   plan_precompute();
-  add("keeping the tables on disk", s_.orders, [this] { keep(); });
-  add("the ground's sky light", s_.orders, [this] { end(); });
+  add("writing its cache", s_.orders, [this] { keep(); });
+  add("its ground light", s_.orders, [this] { end(); });
 }
 
 void BrunetonTechnique::Build::plan_precompute() {
@@ -441,7 +441,7 @@ void BrunetonTechnique::Build::plan_precompute() {
   // last two orders of multiple scattering; of the ground's sky light, from
   // the last two of its own (the sky's irradiance runs an order behind).
   if (s.tail && s.orders >= 3) {
-    const std::string what = "the orders past the last";
+    const std::string what = "the orders' tail";
     add(what, s.orders, [this] { began_ = std::chrono::steady_clock::now(); });
     compile("tail", "geometric_tail.comp");
     over_layers(
