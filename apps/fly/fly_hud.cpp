@@ -63,6 +63,10 @@ HudChanges Hud::draw(const HudView& v) {
       fmt::format("{:.1f} fps  gpu {:.0f} ms  {}  {}/{} reused###passes",
                   v.frame_ms > 0 ? 1e3 / v.frame_ms : 0.0, v.gpu_ms, v.technique, v.passes_reused,
                   v.passes_ran + v.passes_reused);
+  if (!v.technique_build.empty()) {
+    ImGui::ProgressBar(float(v.technique_build_fraction), ImVec2(-FLT_MIN, 0.0f),
+                       v.technique_build.c_str());
+  }
   if (ImGui::CollapsingHeader(frame_line.c_str())) {
     if (!v.governor.empty()) {
       ImGui::TextUnformatted(v.governor.c_str());
@@ -119,6 +123,8 @@ HudChanges Hud::draw(const HudView& v) {
     if (ImGui::Checkbox("terrain shadows", &shadows)) changes.terrain_shadows = shadows;
     bool stars = v.stars;
     if (ImGui::Checkbox("stars", &stars)) changes.stars = stars;
+    bool glare = v.glare;
+    if (ImGui::Checkbox("glare", &glare)) changes.glare = glare;
     ImGui::PopItemWidth();
   }
   if (ImGui::CollapsingHeader("keys")) {
