@@ -211,6 +211,9 @@ void FlySession::attach(const Body& body) {
 void FlySession::set_error_budget(double percent) {
   if (percent == error_budget_) return;
   error_budget_ = percent;
+  // The governor chooses from the technique drawn now: a pick still being
+  // built is dropped.
+  if (percent > 0) handover_.reset();
   if (percent > 0 && governor_) {
     governor_->set_budget(percent);
   } else if (percent > 0 && atmosphere_) {
