@@ -92,4 +92,10 @@ grep -q "^  glare " "$run/fly.txt" || { echo "FAIL: the window's frames have no 
 { grep -q "^  resolve " "$run/fly.txt" && grep -q "^  antialias " "$run/fly.txt"; } ||
   grep -q "^  smooth_edges " "$run/fly.txt" ||
   { echo "FAIL: the window's frames are not antialiased (no resolve and antialias, nor smooth_edges pass)"; exit 1; }
+# The build's progress in the HUD leaves the view as free as ever.
+read -r hud_w hud_h win_w win_h < <(sed -n 's/.*the HUD took at most \([0-9]*\) x \([0-9]*\) px of the \([0-9]*\) x \([0-9]*\) window.*/\1 \2 \3 \4/p' "$run/fly.txt")
+[ -n "${hud_w:-}" ] || { echo "FAIL: no word of the HUD's size"; exit 1; }
+if [ $((hud_w * hud_h * 100)) -gt $((win_w * win_h * 12)) ] || [ $((hud_w * 2)) -gt "$win_w" ]; then
+  echo "FAIL: with the build's progress the HUD covers more than an eighth of the view or half its width"; exit 1
+fi
 echo "the window drew $frames frames while bruneton's tables were built, then switched to it"

@@ -17,6 +17,8 @@ const std::array<double, 6> kTimeScales = {0.0, 1.0, 10.0, 100.0, 1000.0, 10000.
 const char* kTimeScaleNames[] = {"pause", "x1", "x10", "x100", "x1000", "x10000"};
 // Settings take this much width: the panel stays a corner of the view.
 constexpr float kItemWidth = 150.0f;
+// A technique being built shows its progress in this much beside the clock.
+constexpr float kBuildBarWidth = 130.0f;
 
 }  // namespace
 
@@ -54,6 +56,16 @@ HudChanges Hud::draw(const HudView& v) {
   ImGui::SetNextWindowBgAlpha(0.6f);
   ImGui::Begin("planet (H hides)", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
   ImGui::Text("%s  %s%s", v.body_name.c_str(), v.utc.c_str(), v.recording ? "  [rec]" : "");
+  if (!v.technique_build.empty()) {
+    // Beside the clock, so that the panel grows no larger; what it does
+    // now under the pointer.
+    ImGui::SameLine();
+    const std::string bar = fmt::format("{} {:.0f} %", v.technique_build,
+                                        std::floor(100.0 * v.technique_build_fraction));
+    ImGui::ProgressBar(float(v.technique_build_fraction), ImVec2(kBuildBarWidth, 0.0f),
+                       bar.c_str());
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", v.technique_build_step.c_str());
+  }
   ImGui::Text("%.1f m above ground (%.0f m ellipsoid)", v.height_m, v.height_ellipsoid_m);
   ImGui::Text("%.3g m/s  lat %.4f lon %.4f  sun %.1f deg", v.speed_m_s, v.lat_deg, v.lon_deg,
               v.sun_elevation_deg);
@@ -63,10 +75,6 @@ HudChanges Hud::draw(const HudView& v) {
       fmt::format("{:.1f} fps  gpu {:.0f} ms  {}  {}/{} reused###passes",
                   v.frame_ms > 0 ? 1e3 / v.frame_ms : 0.0, v.gpu_ms, v.technique, v.passes_reused,
                   v.passes_ran + v.passes_reused);
-  if (!v.technique_build.empty()) {
-    ImGui::ProgressBar(float(v.technique_build_fraction), ImVec2(-FLT_MIN, 0.0f),
-                       v.technique_build.c_str());
-  }
   if (ImGui::CollapsingHeader(frame_line.c_str())) {
     if (!v.governor.empty()) {
       ImGui::TextUnformatted(v.governor.c_str());

@@ -34,9 +34,9 @@ struct HudView {
   double error_budget = 0;     // percent; 0: the governor is off
   std::string governor;        // its choice, prediction and the most accurate's cost
   std::string governor_why;    // why, in a line
-  // A technique being built between frames (T), then faded in: a line and
-  // the fraction done; empty when none.
-  std::string technique_build;
+  // A technique being built between frames (T), then faded in: its name,
+  // what it does now and the fraction done; empty when none.
+  std::string technique_build, technique_build_step;
   double technique_build_fraction = 0;
 };
 

@@ -345,7 +345,8 @@ HudView FlySession::hud_view(const Camera& cam, const glm::dvec3& sun, double re
   v.body = body_key_;
   v.technique = switch_ && !switch_->current().empty() ? switch_->current() : technique_;
   if (handover_) {
-    v.technique_build = handover_->status();
+    v.technique_build = handover_->choice();
+    v.technique_build_step = handover_->status();
     v.technique_build_fraction = handover_->fraction();
   }
   v.error_budget = error_budget_;
