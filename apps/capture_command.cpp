@@ -30,6 +30,7 @@ struct CaptureArgs {
   double terrain_cache_mib = 256.0;
   double error_budget = std::nan("");  // NaN: none given
   std::string error_model;
+  bool glare = false;
 };
 
 // "A:B" (B exclusive), "A:" or ":B".
@@ -77,6 +78,7 @@ void run(const CaptureArgs& args) {
   }
   if (args.flight_file.empty()) throw InputError("capture: --flight is required");
   FlightScript script = load_flight_script(args.flight_file);
+  if (args.glare) script.glare = true;
   CaptureOptions options;
   options.out_dir = args.out_dir.empty() ? std::filesystem::path("out") / script.name
                                          : std::filesystem::path(args.out_dir);
@@ -156,6 +158,9 @@ void add_capture_command(CLI::App& app) {
                   "Put the shares in these folders together into the capture folder --out")
       ->expected(1, -1);
   cmd->add_flag("--quiet", args->quiet, "Print nothing but errors");
+  cmd->add_flag("--glare", args->glare,
+                "The eye's glare around the sun, as fly draws it (the flight's \"image\": "
+                "{\"glare\": true})");
   cmd->add_option("--pixel-budget", args->pixel_budget,
                   "Terrain detail: largest projected geometric error in pixels")
       ->check(CLI::Range(0.1, 100.0));

@@ -83,6 +83,8 @@ nlohmann::json sidecar(const FlightScript& script, const FlightPath& path, const
         {"deepest_level", terrain.max_level}}},
   };
   if (script.has_clock) j["utc"] = format_utc(path.utc_at(t));
+  // Only when asked: a capture without glare keeps the bytes it had.
+  if (script.glare) j["image"]["glare"] = true;
   return j;
 }
 
@@ -273,6 +275,7 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
   renderer.set_antialiasing(script.antialiasing);
   renderer.set_terrain_shadows(script.terrain_shadows);
   renderer.set_stars(script.stars);
+  renderer.set_glare(script.glare);
   renderer.set_auto_exposure(script.auto_exposure);
   TerrainOptions terrain;
   terrain.pixel_budget = options.pixel_budget;
@@ -367,6 +370,7 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
       {"technique", budget ? fmt::format("governor, budget {:g} %", *budget) : script.technique},
       {"wall_seconds", result.wall_seconds},
   };
+  if (script.glare) summary["image"]["glare"] = true;
   // A share says what it is a share of, for the merge (capture_shares.h);
   // the merged capture.json is again the one a run at once writes.
   if (!options.share.whole()) {

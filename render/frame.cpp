@@ -22,6 +22,19 @@
 
 namespace planet {
 
+namespace {
+
+// The glare: the light the eye scatters around a bright source, as the CIE
+// disability glare equation gives it (Vos 2003, after Stiles and Holladay):
+// a veil of 10 E / theta^2 (theta in degrees) per steradian for an
+// illuminance E, which puts the same share of the light into each octave of
+// theta: 10 x 2 pi ln 2 / (180 / pi)^2 = 1.33 %. Each level of the pyramid
+// is one octave, from a pixel or two outwards.
+constexpr double kGlarePerOctave = 10.0 * 2.0 * M_PI * M_LN2 / ((180.0 / M_PI) * (180.0 / M_PI));
+constexpr int kGlareOctaves = 6;
+
+}  // namespace
+
 double FrameStats::total_gpu_ms() const {
   double sum = 0;
   for (const auto& p : passes) sum += p.gpu_ms;
@@ -382,9 +395,18 @@ FrameStats FrameRenderer::render(const Camera& camera, const glm::dvec3& sun_dir
   exposure_measured_ = auto_exposure_ && !display_values;
   if (exposure_measured_) measure_exposure();
 
+  const bool glare = glare_ && !display_values;
+  if (glare) draw_glare();
+
   timer_.begin("tonemap");
   tonemap_pass_.begin(ldr_fbo_.id(), width_, height_, tonemap_program_);
   glBindTextureUnit(0, radiance().id());
+  glUniform1f(tonemap_program_.uniform("u_glare_per_octave"),
+              glare ? float(kGlarePerOctave) : 0.0f);
+  if (glare) {
+    glBindTextureUnit(1, glare_up_[0].id());
+    glUniform1i(tonemap_program_.uniform("u_glare_octaves"), int(glare_up_.size()));
+  }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 3, exposure_block_.id());
   glUniform1f(tonemap_program_.uniform("u_exposure"), float(exposure));
   glUniform1i(tonemap_program_.uniform("u_auto_exposure"),
@@ -393,10 +415,74 @@ FrameStats FrameRenderer::render(const Camera& camera, const glm::dvec3& sun_dir
   tonemap_pass_.draw();
   timer_.end();
 
+  if (smooth_edges_) {
+    timer_.begin("smooth_edges");
+    if (!ldr_unsmoothed_.id()) {
+      ldr_unsmoothed_ = make_texture_2d(GL_RGBA8, width_, height_);
+      smooth_edges_program_ =
+          Program::graphics("gl/shaders/fullscreen.vert", "render/shaders/smooth_edges.frag");
+    }
+    glCopyImageSubData(ldr_.id(), GL_TEXTURE_2D, 0, 0, 0, 0, ldr_unsmoothed_.id(), GL_TEXTURE_2D, 0,
+                       0, 0, 0, width_, height_, 1);
+    tonemap_pass_.begin(ldr_fbo_.id(), width_, height_, smooth_edges_program_);
+    glBindTextureUnit(0, ldr_unsmoothed_.id());
+    tonemap_pass_.draw();
+    timer_.end();
+  }
+
   FrameStats stats;
   stats.passes = timer_.collect();
   check_gl_errors("FrameRenderer::render");
   return stats;
+}
+
+// The glare's light, one level per octave of angle: the radiance halved
+// again and again (each level keeps the image's energy), then summed back
+// up with each coarser level spread one octave wider. Equal shares per
+// octave make the 1 / theta^2 of the glare equation (kGlarePerOctave); the
+// tone map takes the share from the pixel and adds the sum.
+void FrameRenderer::draw_glare() {
+  timer_.begin("glare");
+  if (glare_down_.empty()) {
+    glare_down_program_ =
+        Program::graphics("gl/shaders/fullscreen.vert", "render/shaders/glare_down.frag");
+    glare_up_program_ =
+        Program::graphics("gl/shaders/fullscreen.vert", "render/shaders/glare_up.frag");
+    int w = width_, h = height_;
+    for (int level = 0; level < kGlareOctaves && (w > 1 || h > 1); ++level) {
+      w = std::max(1, (w + 1) / 2);
+      h = std::max(1, (h + 1) / 2);
+      glare_down_.push_back(make_texture_2d(GL_RGBA16F, w, h));
+      glare_up_.push_back(make_texture_2d(GL_RGBA16F, w, h));
+      glare_down_fbo_.push_back(make_framebuffer(glare_down_.back().id(), 0));
+      glare_up_fbo_.push_back(make_framebuffer(glare_up_.back().id(), 0));
+    }
+  }
+  auto size = [](const Texture& t) {
+    GLint w = 0, h = 0;
+    glGetTextureLevelParameteriv(t.id(), 0, GL_TEXTURE_WIDTH, &w);
+    glGetTextureLevelParameteriv(t.id(), 0, GL_TEXTURE_HEIGHT, &h);
+    return glm::ivec2(w, h);
+  };
+  const size_t levels = glare_down_.size();
+  for (size_t i = 0; i < levels; ++i) {
+    glm::ivec2 s = size(glare_down_[i]);
+    tonemap_pass_.begin(glare_down_fbo_[i].id(), s.x, s.y, glare_down_program_);
+    glBindTextureUnit(0, i == 0 ? radiance().id() : glare_down_[i - 1].id());
+    tonemap_pass_.draw();
+  }
+  // The coarsest level is its own sum.
+  glm::ivec2 last = size(glare_down_[levels - 1]);
+  glCopyImageSubData(glare_down_[levels - 1].id(), GL_TEXTURE_2D, 0, 0, 0, 0,
+                     glare_up_[levels - 1].id(), GL_TEXTURE_2D, 0, 0, 0, 0, last.x, last.y, 1);
+  for (size_t i = levels - 1; i-- > 0;) {
+    glm::ivec2 s = size(glare_up_[i]);
+    tonemap_pass_.begin(glare_up_fbo_[i].id(), s.x, s.y, glare_up_program_);
+    glBindTextureUnit(0, glare_down_[i].id());
+    glBindTextureUnit(1, glare_up_[i + 1].id());
+    tonemap_pass_.draw();
+  }
+  timer_.end();
 }
 
 const Texture& FrameRenderer::radiance() const {

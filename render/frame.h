@@ -69,6 +69,11 @@ class FrameRenderer {
   // open sky beside it. SystemError for a count the GL cannot give.
   void set_antialiasing(int samples);
   int antialiasing() const { return samples_; }
+  // The tone-mapped image's edges smoothed (FXAA, render/shaders/
+  // smooth_edges.frag), off by default: for a window on a GL where
+  // multisampling costs too much (llvmpipe), in its place.
+  void set_smooth_edges(bool on) { smooth_edges_ = on; }
+  bool smooth_edges() const { return smooth_edges_; }
 
   // Terrain settings, taken by the next set_body.
   void set_terrain_options(const TerrainOptions& options) { terrain_options_ = options; }
@@ -102,6 +107,12 @@ class FrameRenderer {
   void set_stars(bool on);
   bool stars() const { return stars_on_; }
   void set_star_orientation(const glm::dmat3& body_from_icrf) { body_from_icrf_ = body_from_icrf; }
+
+  // Glare: the eye's scattered light around very bright pixels (the sun),
+  // off by default (captures and the lab measure the sky alone); fly turns
+  // it on. See draw_glare.
+  void set_glare(bool on) { glare_ = on; }
+  bool glare() const { return glare_; }
 
   // Automatic exposure: each frame's own, set from its mean luminance
   // (auto_exposure.comp) in place of the one render() is given. Off by
@@ -155,6 +166,9 @@ class FrameRenderer {
   // The stars, then the automatic exposure, into the frame's radiance.
   void draw_stars(const Camera& camera, double exposure);
   void measure_exposure();
+  // The glare's pyramid of the frame's radiance (glare_up_[0] its sum),
+  // timed as the pass "glare".
+  void draw_glare();
 
   int width_, height_;
   // ground_below_: how far the surface under each pixel lies below the
@@ -201,6 +215,14 @@ class FrameRenderer {
   bool exposure_measured_ = false;  // the last frame's was measured
   Program exposure_program_;
   Buffer exposure_block_;
+  bool glare_ = false;
+  bool smooth_edges_ = false;
+  Texture ldr_unsmoothed_;  // the tone map's, made on the first smoothing
+  Program smooth_edges_program_;
+  // Half the frame's size and down by halves, made on the first glare.
+  std::vector<Texture> glare_down_, glare_up_;
+  std::vector<Framebuffer> glare_down_fbo_, glare_up_fbo_;
+  Program glare_down_program_, glare_up_program_;
   GpuTimer timer_;
 };
 

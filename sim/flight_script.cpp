@@ -79,6 +79,7 @@ FlightScript load_flight_script(const std::filesystem::path& file) {
   }
   s.terrain_shadows = image.boolean_or("terrain_shadows", true);
   s.stars = image.boolean_or("stars", true);
+  s.glare = image.boolean_or("glare", false);
   image.finish();
 
   s.frame_rate = root.number("frame_rate", 1e-3, 1000.0);

@@ -53,6 +53,9 @@ struct FlightScript {
   // "image": {"stars": false}: no stars behind the sky (render/star_field.h);
   // on unless given.
   bool stars = true;
+  // "image": {"glare": true}: the eye's glare around the sun (render/frame.h's
+  // set_glare), as fly draws it; off unless given (or capture --glare).
+  bool glare = false;
   double frame_rate = 0;
   double exposure = 1;  // multiplies radiance before tone mapping; the default for keyframes
   // "exposure": "auto": each frame's own, from its mean luminance

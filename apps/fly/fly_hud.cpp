@@ -17,6 +17,8 @@ const std::array<double, 6> kTimeScales = {0.0, 1.0, 10.0, 100.0, 1000.0, 10000.
 const char* kTimeScaleNames[] = {"pause", "x1", "x10", "x100", "x1000", "x10000"};
 // Settings take this much width: the panel stays a corner of the view.
 constexpr float kItemWidth = 150.0f;
+// A technique being built shows its progress in this much beside the clock.
+constexpr float kBuildBarWidth = 100.0f;
 
 // Metres per second near the ground, km/s higher up (free flight's speed
 // runs from a walk to thousands of km/s).
@@ -63,8 +65,24 @@ HudChanges Hud::draw(const HudView& v) {
   ImGui::Begin(v.recording ? "planet [rec] (H hides)###planet" : "planet (H hides)###planet",
                nullptr, ImGuiWindowFlags_AlwaysAutoResize);
   // Three lines, as narrow as they go: the panel stays a corner of the view.
-  ImGui::Text("%s  %s  sun %.1f deg %s", v.body_name.c_str(), v.utc.c_str(), v.sun_elevation_deg,
-              v.daylight.c_str());
+  if (v.technique_build.empty()) {
+    ImGui::Text("%s  %s  sun %.1f deg %s", v.body_name.c_str(), v.utc.c_str(), v.sun_elevation_deg,
+                v.daylight.c_str());
+  } else {
+    // While a technique is built its progress sits beside the clock, which
+    // gives up its date for it, so that the panel grows no larger; what it
+    // does now under the pointer.
+    const std::size_t t = v.utc.find('T');
+    const std::string time_of_day = t == std::string::npos ? v.utc : v.utc.substr(t + 1);
+    ImGui::Text("%s  %s  sun %.1f deg %s", v.body_name.c_str(), time_of_day.c_str(),
+                v.sun_elevation_deg, v.daylight.c_str());
+    ImGui::SameLine();
+    const std::string bar = fmt::format("{} {:.0f} %", v.technique_build,
+                                        std::floor(100.0 * v.technique_build_fraction));
+    ImGui::ProgressBar(float(v.technique_build_fraction), ImVec2(kBuildBarWidth, 0.0f),
+                       bar.c_str());
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", v.technique_build_step.c_str());
+  }
   ImGui::Text("%.1f m above ground (%.0f m ellipsoid)  speed %s", v.height_m, v.height_ellipsoid_m,
               speed_text(v.speed_m_s).c_str());
   ImGui::Text("lat %.4f lon %.4f  heading %.1f pitch %.1f", v.lat_deg, v.lon_deg, v.heading_deg,
@@ -131,6 +149,8 @@ HudChanges Hud::draw(const HudView& v) {
     if (ImGui::Checkbox("terrain shadows", &shadows)) changes.terrain_shadows = shadows;
     bool stars = v.stars;
     if (ImGui::Checkbox("stars", &stars)) changes.stars = stars;
+    bool glare = v.glare;
+    if (ImGui::Checkbox("glare", &glare)) changes.glare = glare;
     ImGui::PopItemWidth();
   }
   if (ImGui::CollapsingHeader("keys")) {

@@ -31,17 +31,22 @@ struct HudView {
   float lod_pixels = 1;
   bool terrain_shadows = true;
   bool stars = true;
+  bool glare = true;
   bool auto_exposure = false;  // then `exposure` is the frame's measured one
   double error_budget = 0;     // percent; 0: the governor is off
   std::string governor;        // its choice, prediction and the most accurate's cost
   std::string governor_why;    // why, in a line
+  // A technique being built between frames (T), then faded in: its name,
+  // what it does now and the fraction done; empty when none.
+  std::string technique_build, technique_build_step;
+  double technique_build_fraction = 0;
 };
 
 struct HudChanges {
   std::optional<std::string> body, technique;
   std::optional<double> hours_utc, time_scale, exposure;
   std::optional<float> lod_pixels;
-  std::optional<bool> terrain_shadows, stars, auto_exposure;
+  std::optional<bool> terrain_shadows, stars, auto_exposure, glare;
   std::optional<double> error_budget;  // 0: off
 };
 

@@ -18,6 +18,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 
@@ -31,6 +32,10 @@ constexpr double kStep = 1.0 / 120.0;  // fixed simulation step, seconds
 // machine) is dropped rather than flown through.
 constexpr double kLongestStallSeconds = 30.0;
 constexpr double kRecordRate = 10.0;  // recorded keyframes (= capture frames) per second
+// A technique's tables built between frames take as long a frame as the
+// frame itself takes to draw (the window's rate halves while they are
+// built), and at least this long: a quick frame does not stretch the build.
+constexpr double kLeastBuildSlice = 0.05;
 const std::array<const char*, 4> kBodies = {"earth", "mars", "asteroid", "moon"};
 
 // "10:30 local solar time" from the sun's hour angle.
@@ -55,10 +60,19 @@ FlySession::FlySession(const FlyArgs& args, GLFWwindow* window, FlyInput& input,
                                                           : std::filesystem::path(args.error_model));
   renderer_ = std::make_unique<FrameRenderer>(std::max(1, int(args.width * args.render_scale)),
                                               std::max(1, int(args.height * args.render_scale)));
+  // The edges as a capture draws them (a flight's default); but llvmpipe
+  // shades each sample, and the surfaces' pass took 4.5 times as long (1070
+  // against 237 ms a frame at 480 x 270): there the edges are smoothed in
+  // the image instead, for a few ms.
   const bool software =
       std::string(reinterpret_cast<const char*>(glGetString(GL_RENDERER))).find("llvmpipe") !=
       std::string::npos;
-  renderer_->set_antialiasing(args.antialiasing > 0 ? args.antialiasing : software ? 1 : 4);
+  renderer_->set_antialiasing(args.antialiasing > 0 ? args.antialiasing
+                              : software            ? 1
+                                                    : FlightScript().antialiasing);
+  renderer_->set_smooth_edges(args.antialiasing == 0 && software);
+  // The sun glares as it does to an eye; a capture leaves it out unless asked.
+  renderer_->set_glare(true);
   ldr_framebuffer_ = make_framebuffer(renderer_->ldr_texture(), 0);
   // A window never waits for tiles: it draws parents while children load.
   renderer_->set_terrain_wait(0.0);
@@ -116,6 +130,8 @@ bool FlySession::frame(double real_dt) {
     switch_->apply(*decision_, *atmosphere_);
     set_progress_observer(nullptr);
   }
+  if (handover_) advance_handover(real_dt);
+  const auto draw_began = std::chrono::steady_clock::now();
   renderer_->set_star_orientation(body_from_icrf(body_, clock_.utc()));
   stats_ = renderer_->render(cam, sun, exposure_);
   tally_.add(stats_.passes);
@@ -126,7 +142,23 @@ bool FlySession::frame(double real_dt) {
     glfwSwapBuffers(window_);
   }
   check_gl_errors("fly frame");
+  draw_seconds_ =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - draw_began).count();
   return true;
+}
+
+void FlySession::advance_handover(double real_dt) {
+  if (!handover_->advance(real_dt, std::max(kLeastBuildSlice, draw_seconds_))) {
+    if (handover_->finished()) handover_.reset();
+    return;
+  }
+  technique_ = handover_->choice();
+  std::printf(
+      "technique: %s (built in %.1f s while %d frames were drawn, %.1f s of it building; the "
+      "longest frame %.2f s)\n",
+      technique_.c_str(), handover_->wall_seconds(), handover_->frames_while_building(),
+      handover_->build_seconds(), handover_->longest_frame_seconds());
+  std::fflush(stdout);
 }
 
 double FlySession::ground_at(const Geodetic& place) const {
@@ -148,6 +180,8 @@ glm::dvec3 FlySession::sun_dir() const {
 // Gives the renderer the body with its atmosphere drawn by the current
 // technique.
 void FlySession::attach(const Body& body) {
+  // A technique still being built was for the body before.
+  handover_.reset();
   std::optional<AtmosphereModel> atmosphere;
   std::unique_ptr<AtmosphereTechnique> technique;
   if (body.has_atmosphere()) {
@@ -184,6 +218,9 @@ void FlySession::attach(const Body& body) {
 void FlySession::set_error_budget(double percent) {
   if (percent == error_budget_) return;
   error_budget_ = percent;
+  // The governor chooses from the technique drawn now: a pick still being
+  // built is dropped.
+  if (percent > 0) handover_.reset();
   if (percent > 0 && governor_) {
     governor_->set_budget(percent);
   } else if (percent > 0 && atmosphere_) {
@@ -283,14 +320,28 @@ std::string FlySession::light_up(const Geodetic& place) {
   return text;
 }
 
-// A new technique: same body, same place.
+// A new technique: same body, same place. The one drawn now draws on while
+// the new one's tables are built between frames; then it fades in. Another
+// pick before that drops the build and starts on the new pick.
 void FlySession::set_technique(const std::string& name) {
-  technique_ = name;
-  // A technique picked by hand wins over the governor.
+  // A technique picked by hand wins over the governor: its last choice
+  // draws until the pick is built.
   error_budget_ = 0;
-  attach(body_);
-  std::printf("technique: %s\n", name.c_str());
-  std::fflush(stdout);
+  if (governor_) {
+    if (!switch_->current().empty()) technique_ = switch_->current();
+    renderer_->set_fade(nullptr, 0.0);
+    governor_.reset();
+    switch_.reset();
+  }
+  handover_.reset();
+  if (!atmosphere_ || name == technique_) {
+    // Nothing to build: an airless body draws no sky.
+    technique_ = name;
+    std::printf("technique: %s\n", name.c_str());
+    std::fflush(stdout);
+    return;
+  }
+  handover_ = std::make_unique<TechniqueHandover>(*renderer_, name, *atmosphere_);
 }
 
 void FlySession::handle_key(int key) {
@@ -301,8 +352,10 @@ void FlySession::handle_key(int key) {
     load(kBodies[(i + 1) % kBodies.size()], false);
   }
   if (key == GLFW_KEY_T) {
+    // The next after the one being built, if any.
     auto names = technique_names();
-    auto it = std::find(names.begin(), names.end(), parse_technique(technique_).name);
+    const std::string& from = handover_ ? handover_->choice() : technique_;
+    auto it = std::find(names.begin(), names.end(), parse_technique(from).name);
     size_t i = it == names.end() ? 0 : size_t(it - names.begin());
     set_technique(names[(i + 1) % names.size()]);
   }
@@ -351,6 +404,11 @@ HudView FlySession::hud_view(const Camera& cam, const glm::dvec3& sun, double re
   }
   v.body = body_key_;
   v.technique = switch_ && !switch_->current().empty() ? switch_->current() : technique_;
+  if (handover_) {
+    v.technique_build = handover_->choice();
+    v.technique_build_step = handover_->status();
+    v.technique_build_fraction = handover_->fraction();
+  }
   v.error_budget = error_budget_;
   if (decision_) {
     const GovernorDecision& d = *decision_;
@@ -372,6 +430,7 @@ HudView FlySession::hud_view(const Camera& cam, const glm::dvec3& sun, double re
   v.lod_pixels = lod_pixels_;
   v.terrain_shadows = renderer_->terrain_shadows();
   v.stars = renderer_->stars();
+  v.glare = renderer_->glare();
   return v;
 }
 
@@ -392,6 +451,7 @@ void FlySession::apply(const HudChanges& c) {
   }
   if (c.terrain_shadows) renderer_->set_terrain_shadows(*c.terrain_shadows);
   if (c.stars) renderer_->set_stars(*c.stars);
+  if (c.glare) renderer_->set_glare(*c.glare);
   if (c.auto_exposure) {
     // Off: the slider starts from what the frames were shown with.
     if (!*c.auto_exposure && renderer_->auto_exposure()) exposure_ = renderer_->last_exposure();

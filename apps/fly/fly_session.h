@@ -8,6 +8,7 @@
 #include "gl/texture.h"
 #include "render/frame.h"
 #include "render/governor.h"
+#include "render/technique_handover.h"
 #include "render/technique_switch.h"
 #include "sim/body.h"
 #include "sim/flight_controller.h"
@@ -36,8 +37,8 @@ struct FlyArgs {
   double orbit_inclination_deg = -1;
   int width = 960, height = 540;
   double render_scale = 0.5;  // of the window; llvmpipe is slow at full size
-  // Samples a pixel for the surfaces' edges; 1: none; 0: 4 on a GPU, 1 on
-  // llvmpipe (where 4 cost a quarter of a frame more).
+  // Samples a pixel for the surfaces' edges; 1: none; 0: a capture's
+  // default (4), or on llvmpipe the image's edges smoothed instead (FXAA).
   int antialiasing = 0;
   double exposure = 8.0, vertical_fov_deg = 60.0;
   bool auto_exposure = false;  // each frame's own, from its mean luminance
@@ -69,6 +70,8 @@ class FlySession {
   // the exposure turns automatic unless the command line fixed it.
   std::string light_up(const Geodetic& place);
   void set_technique(const std::string& name);
+  // The technique being built between frames, then faded in (T).
+  void advance_handover(double real_dt);
   // A budget (percent) lets the governor choose; 0 turns it off.
   void set_error_budget(double percent);
   void handle_key(int key);
@@ -96,6 +99,8 @@ class FlySession {
   std::unique_ptr<Geodesy> geodesy_;  // of body_
   std::unique_ptr<FrameRenderer> renderer_;
   Framebuffer ldr_framebuffer_;  // the renderer's tone-mapped target, to blit from
+  std::unique_ptr<TechniqueHandover> handover_;  // after renderer_: it ends the renderer's fade
+  double draw_seconds_ = 0;  // the last frame's own time, without a handover's build
   std::unique_ptr<FlightController> controller_;
   ScriptedFlight* scripted_ = nullptr;  // the controller, when flying a script
   std::unique_ptr<FlightRecorder> recorder_;

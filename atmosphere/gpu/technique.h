@@ -88,12 +88,32 @@ struct SkyFrame {
   GLuint target_framebuffer = 0;
 };
 
+// A technique's update() cut into slices, for a window that keeps drawing
+// another technique while this one builds its tables (fly's T): each
+// step() does the next slice, as short as the work allows, between two
+// frames. Every slice binds what it uses, so the frames drawn between
+// slices change nothing of what the tables come to hold: done in slices or
+// in one go, they are the same bytes.
+class TableBuild {
+ public:
+  virtual ~TableBuild() = default;
+  // The next slice; true once the tables are complete.
+  virtual bool step() = 0;
+  // How far it is, 0 to 1, and what it does now ("order 2 of 4").
+  virtual double fraction() const = 0;
+  virtual std::string what() const = 0;
+};
+
 class AtmosphereTechnique {
  public:
   virtual ~AtmosphereTechnique() = default;
   virtual std::string name() const = 0;
   // Takes new parameters; cheap when nothing changed.
   virtual void update(const AtmosphereModel& model) = 0;
+  // update(model) in slices (TableBuild): the technique outlives the build
+  // and draws nothing until it is done. The default is one slice, for the
+  // techniques whose update takes a frame or less.
+  virtual std::unique_ptr<TableBuild> update_in_slices(const AtmosphereModel& model);
   // The tables that depend on the model alone, for this frame; a frame
   // calls it before drawing its surfaces, which may light themselves with
   // ground_irradiance(). render() prepares them itself when not called.
@@ -114,5 +134,27 @@ class AtmosphereTechnique {
   // SkyTerrainShadow: only then does a frame compute one.
   virtual bool takes_terrain_shadow() const { return false; }
 };
+
+// The default build: update() in one slice.
+inline std::unique_ptr<TableBuild> AtmosphereTechnique::update_in_slices(
+    const AtmosphereModel& model) {
+  class OneSlice final : public TableBuild {
+   public:
+    OneSlice(AtmosphereTechnique& t, const AtmosphereModel& m) : technique_(t), model_(m) {}
+    bool step() override {
+      if (!done_) technique_.update(model_);
+      done_ = true;
+      return true;
+    }
+    double fraction() const override { return done_ ? 1.0 : 0.0; }
+    std::string what() const override { return "its tables"; }
+
+   private:
+    AtmosphereTechnique& technique_;
+    AtmosphereModel model_;
+    bool done_ = false;
+  };
+  return std::make_unique<OneSlice>(*this, model);
+}
 
 }  // namespace planet

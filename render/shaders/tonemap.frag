@@ -16,6 +16,12 @@ layout(std430, binding = 3) readonly buffer ExposureBlock {
 };
 // 1: the target already holds display values (a technique's own mapping).
 uniform int u_display_values;
+// The glare (frame.cpp's draw_glare): the sum of its levels, each one
+// octave of the eye's scattered light, and the share of the light each
+// takes; 0: no glare.
+layout(binding = 1) uniform sampler2D u_glare;
+uniform float u_glare_per_octave;
+uniform int u_glare_octaves;
 
 // Jimenez 2014, interleaved gradient noise: a fixed per-pixel pattern in
 // [0, 1), so that dithered frames stay identical run to run.
@@ -25,6 +31,12 @@ float dither_noise(vec2 pixel) {
 
 void main() {
   vec3 hdr = texelFetch(u_hdr, ivec2(gl_FragCoord.xy), 0).rgb;
+  if (u_glare_per_octave > 0.0) {
+    // What the glare spreads around is taken from where it came: a scene
+    // without bright points keeps its brightness.
+    vec3 glare = texture(u_glare, gl_FragCoord.xy / vec2(textureSize(u_hdr, 0))).rgb;
+    hdr = (1.0 - float(u_glare_octaves) * u_glare_per_octave) * hdr + u_glare_per_octave * glare;
+  }
   float exposure = u_auto_exposure != 0 ? measured_exposure : u_exposure;
   vec3 color = u_display_values != 0 ? clamp(hdr, 0.0, 1.0) : tone_map(hdr * exposure);
   // Half a step of the 8-bit target either way, after tone mapping: smooth

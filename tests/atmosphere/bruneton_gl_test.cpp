@@ -140,6 +140,57 @@ TEST_F(BrunetonGLTest, CorruptCacheIsReportedAndRebuilt) {
   EXPECT_TRUE(fourth.from_cache());
 }
 
+// fly builds the tables a slice at a time between its frames: with a
+// frame's worth of other state between the slices (other textures on the
+// units the passes read, other images, another program and atmosphere
+// block), they are the same bytes as the tables built in one go.
+TEST_F(BrunetonGLTest, TablesBuiltInSlicesAreTheSameBytes) {
+  Scene scene = small_scene("earth_noon");
+  AtmosphereModel model = scene_atmosphere(scene, scene_body(scene));
+  BrunetonTechnique::Settings settings = small_settings();
+  settings.orders = 4;  // the tail too; a key no other test uses
+  std::vector<float> at_once;
+  {
+    BrunetonTechnique first(settings);
+    std::filesystem::remove(bruneton_cache_file(first.cache_key(model)));
+    first.update(model);
+    ASSERT_FALSE(first.from_cache());
+    at_once = scattering_texels(first);
+  }
+  BrunetonTechnique sliced(settings);
+  std::filesystem::remove(bruneton_cache_file(sliced.cache_key(model)));
+  std::unique_ptr<TableBuild> build = sliced.update_in_slices(model);
+  Texture other_2d = make_texture_2d(GL_RGBA32F, 4, 4);
+  Texture other_3d = make_texture_3d(GL_RGBA32F, 4, 4, 4);
+  const float big[4] = {1e3f, 1e3f, 1e3f, 1e3f};
+  glClearTexImage(other_2d.id(), 0, GL_RGBA, GL_FLOAT, big);
+  glClearTexImage(other_3d.id(), 0, GL_RGBA, GL_FLOAT, big);
+  Buffer other_block = make_buffer(4096, nullptr);
+  int slices = 0;
+  double fraction = 0;
+  while (!build->step()) {
+    ++slices;
+    EXPECT_GE(build->fraction(), fraction) << "after slice " << slices;
+    fraction = build->fraction();
+    for (GLuint unit = 0; unit < 6; ++unit) {
+      glBindTextureUnit(unit, unit % 2 ? other_3d.id() : other_2d.id());
+      glBindImageTexture(unit, other_3d.id(), 0, GL_TRUE, 0, GL_READ_WRITE, GL_RGBA32F);
+    }
+    glBindBufferBase(GL_UNIFORM_BUFFER, 0, other_block.id());
+    glBindBufferBase(GL_UNIFORM_BUFFER, 1, other_block.id());
+    glUseProgram(0);
+  }
+  EXPECT_FALSE(sliced.from_cache());
+  EXPECT_EQ(build->fraction(), 1.0);
+  // A layer of the 3D table a slice: single scattering, each order's
+  // density and light, the tail.
+  EXPECT_GE(slices, settings.r * (2 + 2 * (settings.orders - 1)));
+  std::vector<float> in_slices = scattering_texels(sliced);
+  ASSERT_EQ(at_once.size(), in_slices.size());
+  EXPECT_EQ(0, std::memcmp(at_once.data(), in_slices.data(), at_once.size() * sizeof(float)))
+      << "the tables built in slices differ from those built at once";
+}
+
 // The lab's floor lifts the default limit, never one the environment set.
 TEST(BrunetonCacheLimit, AFloorLiftsTheDefaultButNotTheEnvironments) {
   const char* was = std::getenv("PLANET_BRUNETON_CACHE_MB");

@@ -151,6 +151,16 @@ TEST_F(FlightScriptTest, ExposureIsANumberOrAutoAndStarsAreOnUnlessTurnedOff) {
   expect_error(write("bad2.json", keyed), {"keyframes[0].exposure", "\"auto\""});
 }
 
+// The window's glare is a capture's only when the flight asks for it.
+TEST_F(FlightScriptTest, GlareIsOffUnlessAsked) {
+  EXPECT_FALSE(load_flight_script(write("ok.json", script())).glare);
+  FlightScript glaring = load_flight_script(
+      write("glare.json", script("\"height\": 32", "\"height\": 32, \"glare\": true")));
+  EXPECT_TRUE(glaring.glare);
+  expect_error(write("bad.json", script("\"height\": 32", "\"height\": 32, \"glare\": 1")),
+               {"bad.json", "glare"});
+}
+
 TEST_F(FlightScriptTest, OutOfRangeLatitudeAndMissingField) {
   expect_error(write("bad.json", script("\"lat_deg\": 11", "\"lat_deg\": 91")),
                {"keyframes[2].lat_deg", "91", "out of range"});

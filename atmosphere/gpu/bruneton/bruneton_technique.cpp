@@ -13,10 +13,14 @@
 #include <fmt/format.h>
 #include <glm/gtc/type_ptr.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
+#include <map>
+#include <optional>
 
 namespace planet {
 
@@ -169,206 +173,342 @@ std::string BrunetonTechnique::cache_key(const AtmosphereModel& model) const {
   return fmt::format("{:016x}", h.value());
 }
 
-void BrunetonTechnique::update(const AtmosphereModel& model) {
-  std::string key = cache_key(model);
-  if (key == key_) return;  // the same tables
-  model_ = model;
-  mu_s_min_ = bruneton_mu_s_min(model);
-  AtmosphereBlock block = make_atmosphere_block(model);
-  glNamedBufferSubData(block_.id(), 0, sizeof(block), &block);
-  const Settings& s = settings_;
-  const int width = s.nu * s.mu_s;
-  const GLenum format = s.half ? GL_RGBA16F : GL_RGBA32F;
-  transmittance_ = make_texture_2d(GL_RGBA32F, s.transmittance_width, s.transmittance_height);
-  irradiance_ = make_texture_2d(GL_RGBA32F, s.irradiance_width, s.irradiance_height);
-  scattering_ = make_texture_3d(format, width, s.mu, s.r);
-  single_mie_ =
-      s.combined ? make_texture_3d(format, 1, 1, 1) : make_texture_3d(format, width, s.mu, s.r);
+// The tables a slice at a time: from the disk cache in one, or the
+// precompute's passes, each layer of r of a 3D table a slice (they end with
+// glFinish: the progress is real, and a long pass never hogs a GPU past its
+// watchdog). Each slice binds all it reads and writes: a window draws its
+// frames between them.
+class BrunetonTechnique::Build final : public TableBuild {
+ public:
+  Build(BrunetonTechnique& technique, const AtmosphereModel& model)
+      : t_(technique), s_(technique.settings_), model_(model), key_(technique.cache_key(model)) {
+    if (key_ != t_.key_) add("the tables", 0.0, [this] { begin(); });
+  }
 
-  std::vector<CachedTable> sizes = {{s.transmittance_width, s.transmittance_height, 1, {}},
-                                    {s.irradiance_width, s.irradiance_height, 1, {}},
-                                    {width, s.mu, s.r, {}}};
-  if (!s.combined) sizes.push_back({width, s.mu, s.r, {}});
-  std::vector<const Texture*> textures = {&transmittance_, &irradiance_, &scattering_,
-                                          &single_mie_};
-  if (auto cached = read_bruneton_cache(key, sizes)) {
+  bool step() override {
+    if (next_ < slices_.size()) {
+      // Moved out first: a slice may add slices.
+      Slice slice = std::move(slices_[next_++]);
+      slice.run();
+      done_ = slice.done;
+    }
+    return next_ >= slices_.size();
+  }
+  double fraction() const override { return std::clamp(done_ / total_, 0.0, 1.0); }
+  std::string what() const override {
+    return next_ < slices_.size() ? slices_[next_].what : std::string("done");
+  }
+
+ private:
+  struct Slice {
+    std::string what;
+    double done;  // of total_, once it has run
+    std::function<void()> run;
+  };
+  void add(std::string what, double done, std::function<void()> run) {
+    slices_.push_back({std::move(what), done, std::move(run)});
+  }
+
+  void begin();
+  void plan_precompute();
+  void keep();
+  void end();
+
+  // The precompute's programs, by file and defines.
+  void compile(const std::string& name, const char* file, std::vector<std::string> more = {}) {
+    add("its programs", done_at_, [this, name, file, more] {
+      programs_[name] =
+          Program::compute(std::string("atmosphere/gpu/bruneton/") + file, t_.defines(more));
+    });
+  }
+  const Program& use(const std::string& name) {
+    const Program& p = programs_.at(name);
+    glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, t_.block_.id());
+    p.use();
+    glUniform1f(p.uniform("u_mu_s_min"), float(t_.mu_s_min_));
+    return p;
+  }
+  // A pass over the 3D table, a layer of r a slice, `part` of an order
+  // from `order_at`; `bind` uses its program and binds its inputs.
+  void over_layers(const std::string& what, std::function<const Program&()> bind, GLuint gx,
+                   GLuint gy, bool per_layer_z, double order_at, double part) {
+    for (int layer = 0; layer < s_.r; ++layer) {
+      const double done = order_at + part * double(layer + 1) / s_.r;
+      add(what, done, [this, bind, gx, gy, per_layer_z, layer, done] {
+        const Program& p = bind();
+        glUniform1i(p.uniform("u_first_layer"), layer);
+        glDispatchCompute(gx, per_layer_z ? gy : 1, 1);
+        {
+          DriverWait wait("finishing a layer of the bruneton tables");
+          glFinish();
+        }
+        glMemoryBarrier(kTableBarrier);
+        progress_->update(done);
+        // Ctrl-C under a command's InterruptScope (without one SIGINT ends
+        // the process at once): nothing is kept, the cache is written whole
+        // or not at all.
+        if (InterruptScope::flag().load()) {
+          std::fprintf(stderr,
+                       "planet: interrupted: the bruneton tables were not finished and "
+                       "nothing of them is kept\n");
+          std::exit(kInterruptedExitStatus);
+        }
+      });
+    }
+  }
+
+  BrunetonTechnique& t_;
+  const Settings& s_;
+  AtmosphereModel model_;
+  std::string key_;
+  std::vector<Slice> slices_;
+  size_t next_ = 0;
+  double done_ = 0, total_ = 1;
+  double done_at_ = 0;  // what the slices being planned leave done
+  std::vector<CachedTable> sizes_;
+  std::vector<const Texture*> textures_;
+  // The precompute's: its progress on stderr, its programs, and each
+  // order's ground irradiance and light from the one before: the order
+  // before and this one in turn (and the ones before those, for the
+  // geometric tail).
+  std::optional<Progress> progress_;
+  std::map<std::string, Program> programs_;
+  Texture irradiance_orders_[2], multiple_orders_[2], delta_rayleigh_, delta_mie_, density_;
+  std::chrono::steady_clock::time_point began_;
+};
+
+void BrunetonTechnique::Build::begin() {
+  // Half-built tables answer to no model.
+  t_.key_.clear();
+  t_.model_ = model_;
+  t_.mu_s_min_ = bruneton_mu_s_min(model_);
+  AtmosphereBlock block = make_atmosphere_block(model_);
+  glNamedBufferSubData(t_.block_.id(), 0, sizeof(block), &block);
+  const int width = s_.nu * s_.mu_s;
+  const GLenum format = s_.half ? GL_RGBA16F : GL_RGBA32F;
+  t_.transmittance_ = make_texture_2d(GL_RGBA32F, s_.transmittance_width, s_.transmittance_height);
+  t_.irradiance_ = make_texture_2d(GL_RGBA32F, s_.irradiance_width, s_.irradiance_height);
+  t_.scattering_ = make_texture_3d(format, width, s_.mu, s_.r);
+  t_.single_mie_ =
+      s_.combined ? make_texture_3d(format, 1, 1, 1) : make_texture_3d(format, width, s_.mu, s_.r);
+
+  sizes_ = {{s_.transmittance_width, s_.transmittance_height, 1, {}},
+            {s_.irradiance_width, s_.irradiance_height, 1, {}},
+            {width, s_.mu, s_.r, {}}};
+  if (!s_.combined) sizes_.push_back({width, s_.mu, s_.r, {}});
+  textures_ = {&t_.transmittance_, &t_.irradiance_, &t_.scattering_, &t_.single_mie_};
+  if (auto cached = read_bruneton_cache(key_, sizes_)) {
     for (size_t i = 0; i < cached->size(); ++i) {
-      const CachedTable& t = (*cached)[i];
-      if (t.depth == 1) {
-        glTextureSubImage2D(textures[i]->id(), 0, 0, 0, t.width, t.height, GL_RGBA, GL_FLOAT,
-                            t.rgba.data());
+      const CachedTable& c = (*cached)[i];
+      if (c.depth == 1) {
+        glTextureSubImage2D(textures_[i]->id(), 0, 0, 0, c.width, c.height, GL_RGBA, GL_FLOAT,
+                            c.rgba.data());
       } else {
-        glTextureSubImage3D(textures[i]->id(), 0, 0, 0, 0, t.width, t.height, t.depth, GL_RGBA,
-                            GL_FLOAT, t.rgba.data());
+        glTextureSubImage3D(textures_[i]->id(), 0, 0, 0, 0, c.width, c.height, c.depth, GL_RGBA,
+                            GL_FLOAT, c.rgba.data());
       }
     }
-    from_cache_ = true;
-    precompute_seconds_.clear();
-  } else {
-    precompute();
-    from_cache_ = false;
-    for (auto& t : sizes) {
-      t.rgba.resize(size_t(t.width) * size_t(t.height) * size_t(t.depth) * 4);
-    }
-    DriverWait wait("reading the bruneton tables back");
-    for (size_t i = 0; i < sizes.size(); ++i) {
-      glGetTextureImage(textures[i]->id(), 0, GL_RGBA, GL_FLOAT,
-                        GLsizei(sizes[i].rgba.size() * sizeof(float)), sizes[i].rgba.data());
-    }
-    write_bruneton_cache(key, sizes);
+    t_.from_cache_ = true;
+    t_.precompute_seconds_.clear();
+    total_ = 1;
+    add("its ground light", 1, [this] { end(); });
+    return;
   }
-  make_ground_irradiance();
-  key_ = key;
-  check_gl_errors("BrunetonTechnique::update");
+  t_.from_cache_ = false;
+  total_ = s_.orders;
+  plan_precompute();
+  add("writing its cache", s_.orders, [this] { keep(); });
+  add("its ground light", s_.orders, [this] { end(); });
 }
 
-void BrunetonTechnique::precompute() {
-  const Settings& s = settings_;
+void BrunetonTechnique::Build::plan_precompute() {
+  const Settings& s = s_;
   const int width = s.nu * s.mu_s;
-  auto compute = [&](const char* file, std::vector<std::string> more = {}) {
-    Program p =
-        Program::compute(std::string("atmosphere/gpu/bruneton/") + file, defines(std::move(more)));
-    p.use();
-    glUniform1f(p.uniform("u_mu_s_min"), float(mu_s_min_));
-    return p;
-  };
-  auto use = [&](const Program& p) {
-    p.use();
-    glUniform1f(p.uniform("u_mu_s_min"), float(mu_s_min_));
-  };
-  glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, block_.id());
-  precompute_seconds_.clear();
-  Progress progress(fmt::format("bruneton tables ({} orders)", s.orders), s.orders, "order");
-  progress.update(0);
-  auto began = std::chrono::steady_clock::now();
-  // A pass over the 3D table, a slice of r layers at a time, each finished
-  // (glFinish) so that the progress is real and a long pass never hogs a
-  // GPU past its watchdog; `part` of an order.
-  auto over_layers = [&](const Program& p, GLuint gx, GLuint gy, bool per_layer_z, double order_at,
-                         double part) {
-    for (int layer = 0; layer < s.r; ++layer) {
-      glUniform1i(p.uniform("u_first_layer"), layer);
-      if (per_layer_z) {
-        glDispatchCompute(gx, gy, 1);
-      } else {
-        glDispatchCompute(gx, 1, 1);
-      }
-      {
-        DriverWait wait("finishing a layer of the bruneton tables");
-        glFinish();
-      }
-      progress.update(order_at + part * double(layer + 1) / s.r);
-      // Ctrl-C under a command's InterruptScope (without one SIGINT ends
-      // the process at once): nothing is kept, the cache is written whole
-      // or not at all.
-      if (InterruptScope::flag().load()) {
-        std::fprintf(stderr,
-                     "planet: interrupted: the bruneton tables were not finished and "
-                     "nothing of them is kept\n");
-        std::exit(kInterruptedExitStatus);
-      }
-    }
-    glMemoryBarrier(kTableBarrier);
-  };
-
-  // Each order's ground irradiance and light, from the one before: the
-  // order before and this one in turn (and the ones before those, for the
-  // geometric tail).
-  Texture irradiance_orders[2] = {
-      make_texture_2d(GL_RGBA32F, s.irradiance_width, s.irradiance_height),
-      make_texture_2d(GL_RGBA32F, s.irradiance_width, s.irradiance_height)};
-  Texture multiple_orders[2] = {make_texture_3d(GL_RGBA32F, width, s.mu, s.r),
-                                make_texture_3d(GL_RGBA32F, width, s.mu, s.r)};
-  Texture delta_rayleigh = make_texture_3d(GL_RGBA32F, width, s.mu, s.r);
-  Texture delta_mie = make_texture_3d(GL_RGBA32F, width, s.mu, s.r);
-  Texture density = make_texture_3d(GL_RGBA32F, width, s.mu, s.r);
-  int irradiance_before = 0, multiple_before = 0;  // the order before's index in the pairs
-  const float zero[4] = {0, 0, 0, 0};
-  glClearTexImage(irradiance_.id(), 0, GL_RGBA, GL_FLOAT, zero);
   const GLenum scattering_format = s.half ? GL_RGBA16F : GL_RGBA32F;
+  const GLuint transmittance = t_.transmittance_.id(), irradiance = t_.irradiance_.id();
+  Texture& scattering = t_.scattering_;
+  Texture& single_mie = t_.single_mie_;
+  done_at_ = 0;
+  add(fmt::format("order 1 of {}", s.orders), 0, [this, width] {
+    t_.precompute_seconds_.clear();
+    progress_.emplace(fmt::format("bruneton tables ({} orders)", s_.orders), s_.orders, "order");
+    progress_->update(0);
+    began_ = std::chrono::steady_clock::now();
+    for (Texture& t : irradiance_orders_) {
+      t = make_texture_2d(GL_RGBA32F, s_.irradiance_width, s_.irradiance_height);
+    }
+    for (Texture* t :
+         {&multiple_orders_[0], &multiple_orders_[1], &delta_rayleigh_, &delta_mie_, &density_}) {
+      *t = make_texture_3d(GL_RGBA32F, width, s_.mu, s_.r);
+    }
+    const float zero[4] = {0, 0, 0, 0};
+    glClearTexImage(t_.irradiance_.id(), 0, GL_RGBA, GL_FLOAT, zero);
+  });
+  // The order before's index in the pairs.
+  int irradiance_before = 0, multiple_before = 0;
 
   // Order 1: transmittance, the sun on the ground, single scattering.
-  Program transmittance = compute("transmittance.comp");
-  bind_image(0, transmittance_, GL_RGBA32F, false);
-  glDispatchCompute(groups(s.transmittance_width, 8), groups(s.transmittance_height, 8), 1);
-  glMemoryBarrier(kTableBarrier);
-  glBindTextureUnit(0, transmittance_.id());
-  Program direct = compute("direct_irradiance.comp");
-  bind_image(0, irradiance_orders[irradiance_before], GL_RGBA32F, false);
-  glDispatchCompute(groups(s.irradiance_width, 8), groups(s.irradiance_height, 8), 1);
-  glMemoryBarrier(kTableBarrier);
-  Program single = compute("single_scattering.comp");
-  bind_image(0, delta_rayleigh, GL_RGBA32F, true);
-  bind_image(1, delta_mie, GL_RGBA32F, true);
-  bind_image(2, scattering_, scattering_format, true);
-  if (!s.combined) bind_image(3, single_mie_, scattering_format, true);
-  over_layers(single, groups(width, 8), groups(s.mu, 8), true, 0.0, 1.0);
-  precompute_seconds_.push_back(seconds_since(began));
-
-  Program density_first = compute("scattering_density.comp", {"FIRST_ORDER 1"});
-  Program density_next = compute("scattering_density.comp");
-  Program irradiance_first = compute("indirect_irradiance.comp", {"FIRST_ORDER 1"});
-  Program irradiance_next = compute("indirect_irradiance.comp");
-  Program multiple = compute("multiple_scattering.comp");
-  for (int order = 2; order <= s.orders; ++order) {
-    auto order_began = std::chrono::steady_clock::now();
-    const bool after_first = order == 2;
-    // The density of this order from the order before and the ground lit by
-    // the one before that.
-    const Program& d = after_first ? density_first : density_next;
-    use(d);
-    glBindTextureUnit(0, transmittance_.id());
-    if (after_first) {
-      glBindTextureUnit(1, delta_rayleigh.id());
-      glBindTextureUnit(2, delta_mie.id());
-    } else {
-      glBindTextureUnit(1, multiple_orders[multiple_before].id());
-    }
-    glBindTextureUnit(3, irradiance_orders[irradiance_before].id());
-    bind_image(0, density, GL_RGBA32F, true);
-    over_layers(d, GLuint(s.mu_s), 1, false, order - 1, 0.6);
-    // The ground's irradiance from the order before, added to the sky's.
-    const Program& e = after_first ? irradiance_first : irradiance_next;
-    use(e);
-    bind_image(0, irradiance_orders[1 - irradiance_before], GL_RGBA32F, false);
-    bind_image(1, irradiance_, GL_RGBA32F, false, GL_READ_WRITE);
-    glDispatchCompute(groups(s.irradiance_width, 8), groups(s.irradiance_height, 8), 1);
+  const std::string first = fmt::format("order 1 of {}", s.orders);
+  compile("transmittance", "transmittance.comp");
+  add(first, 0, [this, transmittance] {
+    use("transmittance");
+    glBindImageTexture(0, transmittance, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glDispatchCompute(groups(s_.transmittance_width, 8), groups(s_.transmittance_height, 8), 1);
     glMemoryBarrier(kTableBarrier);
+  });
+  compile("direct", "direct_irradiance.comp");
+  add(first, 0, [this, transmittance] {
+    use("direct");
+    glBindTextureUnit(0, transmittance);
+    bind_image(0, irradiance_orders_[0], GL_RGBA32F, false);
+    glDispatchCompute(groups(s_.irradiance_width, 8), groups(s_.irradiance_height, 8), 1);
+    glMemoryBarrier(kTableBarrier);
+  });
+  compile("single", "single_scattering.comp");
+  over_layers(
+      first,
+      [this, transmittance, &scattering, &single_mie, scattering_format]() -> const Program& {
+        const Program& p = use("single");
+        glBindTextureUnit(0, transmittance);
+        bind_image(0, delta_rayleigh_, GL_RGBA32F, true);
+        bind_image(1, delta_mie_, GL_RGBA32F, true);
+        bind_image(2, scattering, scattering_format, true);
+        if (!s_.combined) bind_image(3, single_mie, scattering_format, true);
+        return p;
+      },
+      groups(width, 8), groups(s.mu, 8), true, 0.0, 1.0);
+  done_at_ = 1;
+  add(first, 1, [this] { t_.precompute_seconds_.push_back(seconds_since(began_)); });
+
+  compile("density_first", "scattering_density.comp", {"FIRST_ORDER 1"});
+  compile("density_next", "scattering_density.comp");
+  compile("irradiance_first", "indirect_irradiance.comp", {"FIRST_ORDER 1"});
+  compile("irradiance_next", "indirect_irradiance.comp");
+  compile("multiple", "multiple_scattering.comp");
+  for (int order = 2; order <= s.orders; ++order) {
+    const std::string what = fmt::format("order {} of {}", order, s.orders);
+    const bool after_first = order == 2;
+    add(what, order - 1, [this] { began_ = std::chrono::steady_clock::now(); });
+    // The density of this order from the order before and the ground lit by
+    // the one before that; then the ground's irradiance from the order
+    // before, added to the sky's (the same inputs).
+    auto inputs = [this, transmittance, after_first, irradiance_before, multiple_before] {
+      glBindTextureUnit(0, transmittance);
+      if (after_first) {
+        glBindTextureUnit(1, delta_rayleigh_.id());
+        glBindTextureUnit(2, delta_mie_.id());
+      } else {
+        glBindTextureUnit(1, multiple_orders_[multiple_before].id());
+      }
+      glBindTextureUnit(3, irradiance_orders_[irradiance_before].id());
+    };
+    const std::string density = after_first ? "density_first" : "density_next";
+    over_layers(
+        what,
+        [this, inputs, density]() -> const Program& {
+          const Program& p = use(density);
+          inputs();
+          bind_image(0, density_, GL_RGBA32F, true);
+          return p;
+        },
+        GLuint(s.mu_s), 1, false, order - 1, 0.6);
+    add(what, order - 1 + 0.6, [this, inputs, after_first, irradiance, irradiance_before] {
+      use(after_first ? "irradiance_first" : "irradiance_next");
+      inputs();
+      bind_image(0, irradiance_orders_[1 - irradiance_before], GL_RGBA32F, false);
+      glBindImageTexture(1, irradiance, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+      glDispatchCompute(groups(s_.irradiance_width, 8), groups(s_.irradiance_height, 8), 1);
+      glMemoryBarrier(kTableBarrier);
+    });
     irradiance_before = 1 - irradiance_before;
     // This order's light along every texel's ray, added to the sky's.
-    use(multiple);
-    glBindTextureUnit(0, transmittance_.id());
-    glBindTextureUnit(1, density.id());
-    bind_image(0, multiple_orders[1 - multiple_before], GL_RGBA32F, true);
-    bind_image(1, scattering_, scattering_format, true, GL_READ_WRITE);
-    over_layers(multiple, groups(width, 8), groups(s.mu, 8), true, order - 1 + 0.6, 0.4);
+    over_layers(
+        what,
+        [this, transmittance, &scattering, scattering_format, multiple_before]() -> const Program& {
+          const Program& p = use("multiple");
+          glBindTextureUnit(0, transmittance);
+          glBindTextureUnit(1, density_.id());
+          bind_image(0, multiple_orders_[1 - multiple_before], GL_RGBA32F, true);
+          bind_image(1, scattering, scattering_format, true, GL_READ_WRITE);
+          return p;
+        },
+        groups(width, 8), groups(s.mu, 8), true, order - 1 + 0.6, 0.4);
     multiple_before = 1 - multiple_before;
-    precompute_seconds_.push_back(seconds_since(order_began));
+    done_at_ = order;
+    add(what, order, [this] { t_.precompute_seconds_.push_back(seconds_since(began_)); });
   }
   // The orders past the last as a geometric series: of the light, from the
   // last two orders of multiple scattering; of the ground's sky light, from
   // the last two of its own (the sky's irradiance runs an order behind).
   if (s.tail && s.orders >= 3) {
-    auto tail_began = std::chrono::steady_clock::now();
-    Program tail = compute("geometric_tail.comp");
-    glBindTextureUnit(1, multiple_orders[1 - multiple_before].id());
-    glBindTextureUnit(2, multiple_orders[multiple_before].id());
-    bind_image(1, scattering_, scattering_format, true, GL_READ_WRITE);
-    over_layers(tail, groups(width, 8), groups(s.mu, 8), true, s.orders, 0.0);
-    Program irradiance_tail = compute("irradiance_tail.comp");
-    glBindTextureUnit(1, irradiance_orders[1 - irradiance_before].id());
-    glBindTextureUnit(2, irradiance_orders[irradiance_before].id());
-    bind_image(1, irradiance_, GL_RGBA32F, false, GL_READ_WRITE);
-    glDispatchCompute(groups(s.irradiance_width, 8), groups(s.irradiance_height, 8), 1);
-    glMemoryBarrier(kTableBarrier);
-    {
-      DriverWait wait("finishing the bruneton irradiance");
-      glFinish();
-    }
-    precompute_seconds_.back() += seconds_since(tail_began);
+    const std::string what = "the orders' tail";
+    add(what, s.orders, [this] { began_ = std::chrono::steady_clock::now(); });
+    compile("tail", "geometric_tail.comp");
+    over_layers(
+        what,
+        [this, &scattering, scattering_format, multiple_before]() -> const Program& {
+          const Program& p = use("tail");
+          glBindTextureUnit(1, multiple_orders_[1 - multiple_before].id());
+          glBindTextureUnit(2, multiple_orders_[multiple_before].id());
+          bind_image(1, scattering, scattering_format, true, GL_READ_WRITE);
+          return p;
+        },
+        groups(width, 8), groups(s.mu, 8), true, s.orders, 0.0);
+    compile("irradiance_tail", "irradiance_tail.comp");
+    add(what, s.orders, [this, irradiance, irradiance_before] {
+      use("irradiance_tail");
+      glBindTextureUnit(1, irradiance_orders_[1 - irradiance_before].id());
+      glBindTextureUnit(2, irradiance_orders_[irradiance_before].id());
+      glBindImageTexture(1, irradiance, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+      glDispatchCompute(groups(s_.irradiance_width, 8), groups(s_.irradiance_height, 8), 1);
+      glMemoryBarrier(kTableBarrier);
+      {
+        DriverWait wait("finishing the bruneton irradiance");
+        glFinish();
+      }
+      t_.precompute_seconds_.back() += seconds_since(began_);
+    });
   }
-  progress.finish();
-  check_gl_errors("BrunetonTechnique::precompute");
+  add("its tables", s.orders, [this] {
+    progress_->finish();
+    progress_.reset();
+    // The passes' own tables go before the tables are read back.
+    programs_.clear();
+    for (Texture* t : {&irradiance_orders_[0], &irradiance_orders_[1], &multiple_orders_[0],
+                       &multiple_orders_[1], &delta_rayleigh_, &delta_mie_, &density_}) {
+      *t = Texture();
+    }
+    check_gl_errors("BrunetonTechnique::precompute");
+  });
+}
+
+void BrunetonTechnique::Build::keep() {
+  for (auto& t : sizes_) t.rgba.resize(size_t(t.width) * size_t(t.height) * size_t(t.depth) * 4);
+  {
+    DriverWait wait("reading the bruneton tables back");
+    for (size_t i = 0; i < sizes_.size(); ++i) {
+      glGetTextureImage(textures_[i]->id(), 0, GL_RGBA, GL_FLOAT,
+                        GLsizei(sizes_[i].rgba.size() * sizeof(float)), sizes_[i].rgba.data());
+    }
+  }
+  write_bruneton_cache(key_, sizes_);
+  sizes_.clear();
+}
+
+void BrunetonTechnique::Build::end() {
+  t_.make_ground_irradiance();
+  t_.key_ = key_;
+  check_gl_errors("BrunetonTechnique::update");
+}
+
+std::unique_ptr<TableBuild> BrunetonTechnique::update_in_slices(const AtmosphereModel& model) {
+  return std::make_unique<Build>(*this, model);
+}
+
+void BrunetonTechnique::update(const AtmosphereModel& model) {
+  Build build(*this, model);
+  while (!build.step()) {
+  }
 }
 
 void BrunetonTechnique::make_ground_irradiance() {

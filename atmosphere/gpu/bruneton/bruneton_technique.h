@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -47,6 +48,8 @@ class BrunetonTechnique final : public AtmosphereTechnique {
 
   std::string name() const override { return "bruneton"; }
   void update(const AtmosphereModel& model) override;
+  // The same tables, a layer of a pass a slice (see TableBuild).
+  std::unique_ptr<TableBuild> update_in_slices(const AtmosphereModel& model) override;
   void render(const SkyFrame& frame, GpuTimer& timer) override;
   GLuint ground_irradiance() const override { return ground_irradiance_.id(); }
 
@@ -71,7 +74,7 @@ class BrunetonTechnique final : public AtmosphereTechnique {
   std::string cache_key(const AtmosphereModel& model) const;
 
  private:
-  void precompute();
+  class Build;
   void make_ground_irradiance();
   std::vector<std::string> defines(std::vector<std::string> more) const;
 
