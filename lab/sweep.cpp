@@ -7,6 +7,7 @@
 #include "core/tone_map.h"
 #include "core/version.h"
 #include "gl/texture.h"
+#include "governor/governor.h"
 #include "lab/accuracy.h"
 #include "lab/color_difference.h"
 #include "lab/debiased_error.h"
@@ -16,7 +17,6 @@
 #include "lab/reference_cache.h"
 #include "lab/scene_render.h"
 #include "render/frame.h"
-#include "render/governor.h"
 
 #include <epoxy/gl.h>
 #include <fmt/format.h>
