@@ -4,6 +4,7 @@
 # table of rooms below. Arrows point down only:
 #   apps -> lab -> render -> {atmosphere/gpu, terrain/gpu} -> gl -> core
 #   {atmosphere, terrain} -> sim -> core
+#   {apps, lab, render} -> governor -> atmosphere (its choice is made on the CPU)
 # atmosphere and terrain are kept apart, but for the one file of the
 # atmosphere's surface-lighting API that terrain/gpu may include (its CMake
 # target, planet_atmosphere_surface_lighting, declares it). Only the rooms
@@ -14,7 +15,7 @@ set -euo pipefail
 root="${1:-$(dirname "$0")/..}"
 cd "$root"
 
-rooms=(core gl sim atmosphere terrain render lab apps)
+rooms=(core gl sim atmosphere terrain governor render lab apps)
 files=()
 for dir in "${rooms[@]}"; do
   [ -d "$dir" ] || continue
@@ -44,9 +45,10 @@ BEGIN {
   may["terrain"] = "sim core"
   may["atmosphere/gpu"] = "atmosphere gl sim core"
   may["terrain/gpu"] = "terrain gl sim core"
-  may["render"] = "atmosphere/gpu terrain/gpu atmosphere terrain gl sim core"
-  may["lab"] = "render atmosphere/gpu terrain/gpu atmosphere terrain gl sim core"
-  may["apps"] = "lab render atmosphere/gpu terrain/gpu atmosphere terrain gl sim core"
+  may["governor"] = "atmosphere sim core"
+  may["render"] = "governor atmosphere/gpu terrain/gpu atmosphere terrain gl sim core"
+  may["lab"] = "render governor atmosphere/gpu terrain/gpu atmosphere terrain gl sim core"
+  may["apps"] = "lab render governor atmosphere/gpu terrain/gpu atmosphere terrain gl sim core"
   # Rooms that draw, and so may include GL headers.
   draws["gl"] = draws["atmosphere/gpu"] = draws["terrain/gpu"] = 1
   draws["render"] = draws["lab"] = draws["apps"] = 1

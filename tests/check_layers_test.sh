@@ -32,3 +32,11 @@ expect_failure "a shader path of render named in atmosphere/gpu" atmosphere/gpu/
   'auto p = Program::compute("render/shaders/tonemap.frag");' "atmosphere/gpu points up to render"
 expect_failure "a GL header in the CPU half of terrain" terrain/bad.cpp '#include <epoxy/gl.h>' \
   "terrain does not draw"
+expect_failure "the governor including render" governor/bad.cpp '#include "render/frame.h"' \
+  "governor points up to render"
+expect_failure "the governor including gl" governor/bad.h '#include "gl/context.h"' \
+  "governor reaches across to gl"
+expect_failure "a GL header in the governor" governor/bad.cpp '#include <epoxy/gl.h>' \
+  "governor does not draw"
+expect_failure "atmosphere including the governor" atmosphere/bad.h '#include "governor/governor.h"' \
+  "atmosphere points up to governor"
