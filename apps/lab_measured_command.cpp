@@ -1,5 +1,5 @@
 // planet lab measured: the ground truth and every technique against a
-// measured day's sky (lab/measured_run.h), and the report drawn from it by
+// measured day's sky (lab/gpu/measured_run.h), and the report drawn from it by
 // lab/report/measured_report.py.
 #include "apps/cli_options.h"
 #include "apps/commands.h"
@@ -9,7 +9,7 @@
 #include "core/paths.h"
 #include "core/progress.h"
 #include "gl/context.h"
-#include "lab/measured_run.h"
+#include "lab/gpu/measured_run.h"
 
 #include <fmt/format.h>
 

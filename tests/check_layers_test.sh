@@ -40,3 +40,7 @@ expect_failure "a GL header in the governor" governor/bad.cpp '#include <epoxy/g
   "governor does not draw"
 expect_failure "atmosphere including the governor" atmosphere/bad.h '#include "governor/governor.h"' \
   "atmosphere points up to governor"
+expect_failure "the lab's CPU half including what draws" lab/bad.cpp '#include "lab/gpu/sweep.h"' \
+  "lab points up to lab/gpu"
+expect_failure "a GL header in the lab's CPU half" lab/bad.cpp '#include <epoxy/gl.h>' \
+  "lab does not draw"

@@ -12,7 +12,7 @@
 #include "governor/governor.h"
 
 #include "atmosphere/gpu/registry.h"
-#include "lab/governor_check.h"
+#include "lab/gpu/governor_check.h"
 #include "lab/scene.h"
 
 #include "core/data_paths.h"

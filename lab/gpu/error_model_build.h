@@ -4,7 +4,7 @@
 // each (technique, quality)'s measured error and cost there; and what a
 // change of model recomputes for each, measured once per choice.
 #include "governor/governor.h"
-#include "lab/sweep.h"
+#include "lab/gpu/sweep.h"
 
 #include <functional>
 #include <map>
