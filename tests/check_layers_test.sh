@@ -20,7 +20,7 @@ expect_failure() {
   set -e
   rm "$work/$file"
   [ "$rc" -ne 0 ] || { echo "FAIL: $what passed the check"; exit 1; }
-  echo "$out" | grep -q "$file:1: .*$fragment" ||
+  grep -q "$file:1: .*$fragment" <<< "$out" ||
     { echo "FAIL: $what: the check did not say '$fragment' for $file:"; echo "$out"; exit 1; }
   echo "refused, as it should be: $what"
 }
