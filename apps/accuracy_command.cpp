@@ -16,8 +16,8 @@
 #include "gl/context.h"
 #include "lab/accuracy.h"
 #include "lab/debiased_error.h"
+#include "lab/gpu/scene_render.h"
 #include "lab/reference_cache.h"
-#include "lab/scene_render.h"
 
 #include <fmt/format.h>
 

@@ -4,9 +4,9 @@
 #include "core/paths.h"
 #include "core/progress.h"
 #include "gl/context.h"
+#include "governor/governor.h"
 #include "render/capture.h"
 #include "render/capture_shares.h"
-#include "render/governor.h"
 #include "sim/flight_script.h"
 
 #include <fmt/format.h>

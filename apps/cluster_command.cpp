@@ -4,7 +4,7 @@
 #include "apps/commands.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
-#include "lab/cluster_job.h"
+#include "lab/gpu/cluster_job.h"
 
 #include <fmt/format.h>
 

@@ -1,12 +1,12 @@
 // planet lab run: the sweep of techniques x quality points x canonical
-// scenes (lab/sweep.h), its tables, and the charts and report drawn from
-// them by scripts/lab_report.py.
+// scenes (lab/gpu/sweep.h), its tables, and the charts and report drawn from
+// them by lab/report/lab_report.py.
 #include "apps/cli_options.h"
 #include "apps/commands.h"
 #include "apps/reference_progress.h"
 #include "atmosphere/gpu/bruneton/bruneton_cache.h"
-#include "core/cache_dir.h"
 #include "core/atomic_file.h"
+#include "core/cache_dir.h"
 #include "core/data_paths.h"
 #include "core/error.h"
 #include "core/interrupt.h"
@@ -14,11 +14,11 @@
 #include "core/progress.h"
 #include "core/version.h"
 #include "gl/context.h"
-#include "lab/error_model_build.h"
-#include "lab/governor_check.h"
+#include "lab/gpu/error_model_build.h"
+#include "lab/gpu/governor_check.h"
+#include "lab/gpu/sweep.h"
 #include "lab/reference_cache.h"
 #include "lab/stability.h"
-#include "lab/sweep.h"
 
 #include <epoxy/gl.h>
 #include <fmt/format.h>
@@ -44,7 +44,9 @@ struct LabArgs {
   bool quiet = false, no_report = false;
 };
 
-std::filesystem::path report_script() { return project_root() / "scripts" / "lab_report.py"; }
+std::filesystem::path report_script() {
+  return project_root() / "lab" / "report" / "lab_report.py";
+}
 
 std::string report_python() {
   check_readable_file(report_script());
@@ -179,7 +181,7 @@ struct StabilityArgs {
 };
 
 std::filesystem::path stability_script() {
-  return project_root() / "scripts" / "stability_report.py";
+  return project_root() / "lab" / "report" / "stability_report.py";
 }
 
 // What the shard's cells not yet done will cost on this machine, said

@@ -1,6 +1,6 @@
 // planet lab measured: the ground truth and every technique against a
-// measured day's sky (lab/measured_run.h), and the report drawn from it by
-// scripts/measured_report.py.
+// measured day's sky (lab/gpu/measured_run.h), and the report drawn from it by
+// lab/report/measured_report.py.
 #include "apps/cli_options.h"
 #include "apps/commands.h"
 #include "core/data_paths.h"
@@ -9,7 +9,7 @@
 #include "core/paths.h"
 #include "core/progress.h"
 #include "gl/context.h"
-#include "lab/measured_run.h"
+#include "lab/gpu/measured_run.h"
 
 #include <fmt/format.h>
 
@@ -29,7 +29,9 @@ struct MeasuredArgs {
   bool quiet = false, no_report = false;
 };
 
-std::filesystem::path measured_script() { return project_root() / "scripts" / "measured_report.py"; }
+std::filesystem::path measured_script() {
+  return project_root() / "lab" / "report" / "measured_report.py";
+}
 
 void run_measured_command(MeasuredArgs& args) {
   set_progress_shown(!args.quiet);

@@ -7,7 +7,6 @@
 #include "lab/accuracy.h"
 #include "lab/debiased_error.h"
 #include "lab/reference_cache.h"
-#include "lab/scene_render.h"
 
 #include <fmt/format.h>
 

@@ -8,8 +8,8 @@
 #include "core/interrupt.h"
 #include "core/progress.h"
 #include "core/version.h"
+#include "governor/governor.h"
 #include "render/frame.h"
-#include "render/governor.h"
 #include "render/technique_switch.h"
 #include "terrain/ground.h"
 

@@ -1,10 +1,10 @@
 #pragma once
-// The governor's choices drawn (render/governor.h): each technique it has
+// The governor's choices drawn (governor/governor.h): each technique it has
 // used is kept with its tables, so that switching back costs nothing, and
 // the renderer gets the chosen one and, while a switch fades, the one
 // before it.
+#include "governor/governor.h"
 #include "render/frame.h"
-#include "render/governor.h"
 
 #include <map>
 #include <memory>

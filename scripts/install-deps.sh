@@ -31,7 +31,7 @@ packages=(
   # Earth's day and night imagery (NASA's Blue Marble and city lights;
   # optional at run time: without it Earth has its palette's colours)
   xplanet-images
-  # the lab's charts (scripts/lab_report.py), and the browser its test opens the report in
+  # the lab's charts (lab/report/lab_report.py), and the browser its test opens the report in
   python3-matplotlib chromium
 )
 

@@ -64,7 +64,7 @@ struct FlightScript {
   std::string technique = "hillaire";
   bool technique_named = false;  // the file names it: it wins over any error budget
   // "error_budget_pct": the governor chooses each frame's technique within
-  // this error (render/governor.h).
+  // this error (governor/governor.h).
   std::optional<double> error_budget_percent;
   // With "start_utc" the sun follows the body's ephemeris and the clock
   // (keyframes may set it with "utc" or "clock_s"); without it, the fixed

@@ -20,7 +20,7 @@ expect_failure() {
   set -e
   rm "$work/$file"
   [ "$rc" -ne 0 ] || { echo "FAIL: $what passed the check"; exit 1; }
-  echo "$out" | grep -q "$file:1: .*$fragment" ||
+  grep -q "$file:1: .*$fragment" <<< "$out" ||
     { echo "FAIL: $what: the check did not say '$fragment' for $file:"; echo "$out"; exit 1; }
   echo "refused, as it should be: $what"
 }
@@ -32,3 +32,15 @@ expect_failure "a shader path of render named in atmosphere/gpu" atmosphere/gpu/
   'auto p = Program::compute("render/shaders/tonemap.frag");' "atmosphere/gpu points up to render"
 expect_failure "a GL header in the CPU half of terrain" terrain/bad.cpp '#include <epoxy/gl.h>' \
   "terrain does not draw"
+expect_failure "the governor including render" governor/bad.cpp '#include "render/frame.h"' \
+  "governor points up to render"
+expect_failure "the governor including gl" governor/bad.h '#include "gl/context.h"' \
+  "governor reaches across to gl"
+expect_failure "a GL header in the governor" governor/bad.cpp '#include <epoxy/gl.h>' \
+  "governor does not draw"
+expect_failure "atmosphere including the governor" atmosphere/bad.h '#include "governor/governor.h"' \
+  "atmosphere points up to governor"
+expect_failure "the lab's CPU half including what draws" lab/bad.cpp '#include "lab/gpu/sweep.h"' \
+  "lab points up to lab/gpu"
+expect_failure "a GL header in the lab's CPU half" lab/bad.cpp '#include <epoxy/gl.h>' \
+  "lab does not draw"

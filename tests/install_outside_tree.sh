@@ -3,7 +3,8 @@
 # prefix, then `planet capture` from there with the source tree hidden (a
 # private mount namespace puts an empty tmpfs over it) gives the same bytes
 # as the build tree's program, and `planet techniques` and `planet probe`
-# work there too.
+# work there too, and the lab's commands find their report writers there
+# (each stops at its --out, a file, after it has looked for its writer).
 #   install_outside_tree.sh BUILD_DIR SOURCE_DIR FLIGHT
 set -euo pipefail
 build="$1"; source="$2"; flight="$3"
@@ -28,6 +29,9 @@ unshare -rm bash -c '
   "$2/prefix/bin/planet" capture --flight "$2/flight.json" --out "$2/from_install" --quiet
   "$2/prefix/bin/planet" techniques > "$2/techniques.txt"
   "$2/prefix/bin/planet" probe transmittance --planet mars --height 0 --zenith 30 > "$2/probe.txt"
+  for lab in run stability measured; do
+    ! "$2/prefix/bin/planet" lab $lab --out "$2/flight.json" --quiet 2>> "$2/lab.txt"
+  done
 ' hide "$source" "$work"
 
 count=0
@@ -41,4 +45,6 @@ done
 [ -f "$work/from_install/capture.json" ] || { echo "FAIL: the installed capture did not finish"; exit 1; }
 grep -q "^hillaire " "$work/techniques.txt" || { echo "FAIL: planet techniques lists no hillaire"; exit 1; }
 grep -q "transmittance" "$work/probe.txt" || { echo "FAIL: probe printed nothing"; exit 1; }
+[ "$(grep -c -- "--out $work/flight.json: cannot be a folder" "$work/lab.txt")" -eq 3 ] ||
+  { echo "FAIL: the installed lab did not find its report writers:"; cat "$work/lab.txt"; exit 1; }
 echo "the installed program, with the source tree hidden, captured $count files byte-identical to the build tree's"

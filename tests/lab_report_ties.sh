@@ -29,7 +29,7 @@ json.dump({"planet": "test", "commit": "test", "renderer": "test", "time_size": 
            "accuracy_size": [64, 32], "frames": 5, "cost": "", "error": "", "cells": cells,
            "overall": overall}, open(sys.argv[1] + "/results.json", "w"))
 PY
-"$python" "$source_dir/scripts/lab_report.py" "$work" > "$work/report.txt" 2>&1 ||
+"$python" "$source_dir/lab/report/lab_report.py" "$work" > "$work/report.txt" 2>&1 ||
   { echo "FAIL: lab_report.py: $(cat "$work/report.txt")"; exit 1; }
 "$python" - "$work/report.html" << 'PY'
 import re, sys

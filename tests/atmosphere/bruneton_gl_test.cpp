@@ -7,7 +7,7 @@
 #include "gl/context.h"
 #include "gl/texture.h"
 #include "lab/accuracy.h"
-#include "lab/scene_render.h"
+#include "lab/gpu/scene_render.h"
 
 #include <gtest/gtest.h>
 

@@ -6,8 +6,8 @@
 // channel, as technique_accuracy_gl_test.cpp's.
 #include "gl/context.h"
 #include "lab/accuracy.h"
+#include "lab/gpu/scene_render.h"
 #include "lab/reference_cache.h"
-#include "lab/scene_render.h"
 #include "tests/atmosphere/accuracy_guard.h"
 
 #include <gtest/gtest.h>

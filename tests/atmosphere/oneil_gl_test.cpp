@@ -8,8 +8,8 @@
 #include "core/tone_map.h"
 #include "gl/context.h"
 #include "lab/accuracy.h"
+#include "lab/gpu/scene_render.h"
 #include "lab/reference_cache.h"
-#include "lab/scene_render.h"
 #include "render/frame.h"
 
 #include "tests/render/view_from_place.h"

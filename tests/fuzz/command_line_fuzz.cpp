@@ -8,8 +8,8 @@
 #include "atmosphere/reference/path_budget.h"
 #include "core/share.h"
 #include "fuzz_input.h"
+#include "governor/governor.h"
 #include "lab/stability.h"
-#include "render/governor.h"
 #include "sim/utc_time.h"
 
 #include <vector>

@@ -2,7 +2,7 @@
 // --error-model FILE): read, then asked to choose at each of its own views
 // and between them, as a flight would.
 #include "fuzz_input.h"
-#include "render/governor.h"
+#include "governor/governor.h"
 
 PLANET_FUZZ_TARGET(error_model) {
   std::filesystem::path file =

@@ -2,8 +2,8 @@
 // sweep and a cell of `planet lab stability`'s map (the same file is
 // offered to both readers).
 #include "fuzz_input.h"
+#include "lab/gpu/sweep.h"
 #include "lab/stability.h"
-#include "lab/sweep.h"
 
 PLANET_FUZZ_TARGET(lab_tables) {
   std::filesystem::path file =

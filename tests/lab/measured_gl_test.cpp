@@ -6,7 +6,7 @@
 // luminance 1556 and 1528 cd/m^2 against the 2081 measured.
 #include "core/data_paths.h"
 #include "gl/context.h"
-#include "lab/measured_run.h"
+#include "lab/gpu/measured_run.h"
 
 #include <gtest/gtest.h>
 

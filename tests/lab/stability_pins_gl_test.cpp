@@ -7,8 +7,8 @@
 // points either way.
 #include "gl/context.h"
 #include "lab/accuracy.h"
+#include "lab/gpu/scene_render.h"
 #include "lab/reference_cache.h"
-#include "lab/scene_render.h"
 #include "lab/stability.h"
 
 #include <gtest/gtest.h>

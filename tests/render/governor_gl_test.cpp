@@ -9,10 +9,10 @@
 // the governor's check says up front what it will render.
 #include "render/capture.h"
 
-#include "render/governor.h"
+#include "governor/governor.h"
 
 #include "atmosphere/gpu/registry.h"
-#include "lab/governor_check.h"
+#include "lab/gpu/governor_check.h"
 #include "lab/scene.h"
 
 #include "core/data_paths.h"

@@ -1,4 +1,4 @@
-#include "lab/measured_render.h"
+#include "lab/gpu/measured_render.h"
 
 #include "atmosphere/gpu/registry.h"
 #include "core/error.h"

@@ -1,13 +1,13 @@
-#include "lab/governor_check.h"
+#include "lab/gpu/governor_check.h"
 
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "lab/accuracy.h"
 #include "lab/debiased_error.h"
+#include "lab/gpu/scene_render.h"
+#include "lab/gpu/sweep.h"
 #include "lab/reference_cache.h"
-#include "lab/scene_render.h"
 #include "lab/stability.h"
-#include "lab/sweep.h"
 
 #include <fmt/format.h>
 

@@ -1,10 +1,10 @@
 #pragma once
-// The governor's table (render/governor.h) from the lab's sweep: one row
+// The governor's table (governor/governor.h) from the lab's sweep: one row
 // per canonical scene, described as the governor describes a view, with
 // each (technique, quality)'s measured error and cost there; and what a
 // change of model recomputes for each, measured once per choice.
-#include "lab/sweep.h"
-#include "render/governor.h"
+#include "governor/governor.h"
+#include "lab/gpu/sweep.h"
 
 #include <functional>
 #include <map>

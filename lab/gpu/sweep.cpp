@@ -1,4 +1,4 @@
-#include "lab/sweep.h"
+#include "lab/gpu/sweep.h"
 
 #include "atmosphere/gpu/registry.h"
 #include "core/atomic_file.h"
@@ -7,16 +7,16 @@
 #include "core/tone_map.h"
 #include "core/version.h"
 #include "gl/texture.h"
+#include "governor/governor.h"
 #include "lab/accuracy.h"
 #include "lab/color_difference.h"
 #include "lab/debiased_error.h"
-#include "lab/error_model_build.h"
 #include "lab/error_png.h"
+#include "lab/gpu/error_model_build.h"
+#include "lab/gpu/scene_render.h"
 #include "lab/pareto.h"
 #include "lab/reference_cache.h"
-#include "lab/scene_render.h"
 #include "render/frame.h"
-#include "render/governor.h"
 
 #include <epoxy/gl.h>
 #include <fmt/format.h>

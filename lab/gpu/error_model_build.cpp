@@ -1,4 +1,4 @@
-#include "lab/error_model_build.h"
+#include "lab/gpu/error_model_build.h"
 
 #include "atmosphere/gpu/registry.h"
 #include "core/atomic_file.h"

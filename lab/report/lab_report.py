@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The lab's charts and report, from a sweep's results.json (planet lab run).
 
-    python3 scripts/lab_report.py OUT
+    python3 lab/report/lab_report.py OUT
 
 Writes OUT/pareto_overall.{png,svg} and OUT/pareto_<scene>.{png,svg}: time
 per frame on a log x axis, error on a log y axis, a marker per (technique,

@@ -5,8 +5,8 @@
 #include "core/error.h"
 #include "core/tone_map.h"
 #include "lab/accuracy.h"
+#include "lab/gpu/scene_render.h"
 #include "lab/reference_cache.h"
-#include "lab/scene_render.h"
 
 #include <fmt/format.h>
 

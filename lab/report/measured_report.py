@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The measured skies' plots and report, from planet lab measured's measured.json.
 
-    python3 scripts/measured_report.py OUT
+    python3 lab/report/measured_report.py OUT
 
 Writes
   OUT/measured_vs_modelled.png: every direction of every capture, modelled

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """The stability map's charts and report, from planet lab stability's stability.json.
 
-    python3 scripts/stability_report.py OUT
+    python3 lab/report/stability_report.py OUT
 
 Writes, for each body:
   OUT/map_<body>_density_g.{png,svg}, OUT/map_<body>_radius_altitude.{png,svg}:

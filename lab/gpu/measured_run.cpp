@@ -1,9 +1,9 @@
-#include "lab/measured_run.h"
+#include "lab/gpu/measured_run.h"
 
 #include "atmosphere/gpu/registry.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
-#include "lab/measured_render.h"
+#include "lab/gpu/measured_render.h"
 #include "sim/body.h"
 
 #include <fmt/format.h>

@@ -2,7 +2,7 @@
 // within budget at the lab's own views, hysteresis that keeps it from
 // flapping, a fade on every switch, and tables and scripts that are wrong
 // refused with their file and field named.
-#include "render/governor.h"
+#include "governor/governor.h"
 
 #include "core/error.h"
 #include "lab/scene.h"

@@ -1,4 +1,4 @@
-#include "lab/cluster_job.h"
+#include "lab/gpu/cluster_job.h"
 
 #include "atmosphere/reference/path_budget.h"
 #include "core/error.h"

@@ -1,4 +1,4 @@
-#include "render/governor.h"
+#include "governor/governor.h"
 
 #include "atmosphere/atmosphere_space.h"
 #include "core/data_paths.h"

@@ -1,4 +1,4 @@
-#include "lab/scene_render.h"
+#include "lab/gpu/scene_render.h"
 
 #include "atmosphere/gpu/registry.h"
 #include "render/frame.h"

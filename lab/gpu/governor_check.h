@@ -7,7 +7,7 @@
 // and measured against the cell's ground truth, rendered once and cached.
 // One file per (budget, view), so that a stopped check goes on where it
 // stopped.
-#include "render/governor.h"
+#include "governor/governor.h"
 
 #include <nlohmann/json.hpp>
 
