@@ -8,6 +8,7 @@
 #include "render/capture_shares.h"
 #include "render/governor.h"
 #include "sim/flight_script.h"
+#include "terrain/ground.h"
 
 #include <fmt/format.h>
 
@@ -77,7 +78,10 @@ void run(const CaptureArgs& args) {
     return;
   }
   if (args.flight_file.empty()) throw InputError("capture: --flight is required");
-  FlightScript script = load_flight_script(args.flight_file);
+  // The ground under the keyframes, for those given above it and the
+  // checks below: the body's terrain, read once.
+  GroundHeight ground = terrain_ground();
+  FlightScript script = load_flight_script(args.flight_file, ground);
   if (args.glare) script.glare = true;
   CaptureOptions options;
   options.out_dir = args.out_dir.empty() ? std::filesystem::path("out") / script.name
@@ -115,7 +119,7 @@ void run(const CaptureArgs& args) {
     load_error_model(options.error_model_file.empty() ? shipped_error_model_file()
                                                       : options.error_model_file);
   }
-  check_keyframes_above_ground(script);
+  check_keyframes_above_ground(script, ground);
   OutputFolder out(options.out_dir, "--out");
   auto context = GlContext::create_headless();
   if (!args.quiet) {

@@ -11,7 +11,6 @@
 #include "render/frame.h"
 #include "render/governor.h"
 #include "render/technique_switch.h"
-#include "terrain/ground.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -213,19 +212,20 @@ std::string flight_script_hash(const FlightScript& script) {
   return fmt::format("{:016x}", fnv1a(text.str()));
 }
 
-void check_keyframes_above_ground(const FlightScript& script) {
+void check_keyframes_above_ground(const FlightScript& script, const GroundHeight& ground) {
   if (script.allow_below_ground) return;
-  TerrainSurface surface(script.body.shape, parse_terrain(script.body));
-  Geodesy geodesy(script.body.shape);
   for (size_t i = 0; i < script.keyframes.size(); ++i) {
-    const Geodetic& place = script.keyframes[i].place;
-    double ground = ground_height(surface, geodesy, place);
-    if (place.height < ground) {
+    const Keyframe& k = script.keyframes[i];
+    double ground_m = ground(script.body, k.place);
+    if (k.place.height < ground_m) {
+      std::string given = k.height_above_ground
+                              ? fmt::format("height_above_ground_m {:.1f}", *k.height_above_ground)
+                              : fmt::format("height_m {:.1f}", k.place.height);
       throw InputError(fmt::format(
-          "{}: keyframes[{}]: the camera is {:.1f} m below the ground (height_m {:.1f}, the "
-          "ground {:.1f} m above the ellipsoid there; planet probe ground gives it): raise it, or "
-          "set \"allow_below_ground\": true",
-          script.file.string(), i, ground - place.height, place.height, ground));
+          "{}: keyframes[{}]: the camera is {:.1f} m below the ground ({}, the ground {:.1f} m "
+          "above the ellipsoid there; planet probe ground gives it): raise it, or set "
+          "\"allow_below_ground\": true",
+          script.file.string(), i, ground_m - k.place.height, given, ground_m));
     }
   }
 }

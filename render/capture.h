@@ -60,10 +60,10 @@ TechniqueChoice script_technique(const FlightScript& script);
 // flight's.
 void check_frames(const FlightScript& script, const CaptureOptions& options);
 
-// Every keyframe above the ground under it (terrain/ground.h), unless the
-// script allows otherwise: InputError naming the keyframe, its height and
-// the ground's. No GL needed.
-void check_keyframes_above_ground(const FlightScript& script);
+// Every keyframe above the ground under it (`ground`, terrain_ground() of
+// terrain/ground.h), unless the script allows otherwise: InputError naming
+// the keyframe, its height and the ground's. No GL needed.
+void check_keyframes_above_ground(const FlightScript& script, const GroundHeight& ground);
 
 // What identifies the flight a capture renders: a hash of its script's
 // text, 16 hex digits. A share's capture.json holds it, with the
