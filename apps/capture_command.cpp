@@ -32,7 +32,16 @@ struct CaptureArgs {
   double error_budget = std::nan("");  // NaN: none given
   std::string error_model;
   bool glare = false;
+  // In place of the script's own (render/capture_overrides.h).
+  std::optional<std::string> technique;
+  std::optional<int> width, height;
+  std::optional<double> scale;
 };
+
+// "1 frame", "41 frames".
+std::string count_of(int n, const char* thing) {
+  return fmt::format("{} {}{}", n, thing, n == 1 ? "" : "s");
+}
 
 // "A:B" (B exclusive), "A:" or ":B".
 std::pair<int, int> parse_frame_range(const std::string& text) {
@@ -68,8 +77,9 @@ void run_merge(const CaptureArgs& args) {
   std::vector<std::filesystem::path> inputs(args.merge.begin(), args.merge.end());
   MergedCapture merged = merge_capture_shares(inputs, args.out_dir);
   if (args.quiet) return;
-  std::printf("merged %d frames of %d shares (%.1f s of capture) into %s\n", merged.frames,
-              merged.shares, merged.wall_seconds, args.out_dir.c_str());
+  std::printf("merged %s of %s (%.1f s of capture) into %s\n",
+              count_of(merged.frames, "frame").c_str(), count_of(merged.shares, "share").c_str(),
+              merged.wall_seconds, args.out_dir.c_str());
 }
 
 void run(const CaptureArgs& args) {
@@ -84,6 +94,11 @@ void run(const CaptureArgs& args) {
   FlightScript script = load_flight_script(args.flight_file, ground);
   if (args.glare) script.glare = true;
   CaptureOptions options;
+  options.overrides.technique = args.technique;
+  options.overrides.width = args.width;
+  options.overrides.height = args.height;
+  options.overrides.scale = args.scale;
+  apply_capture_overrides(script, options.overrides);
   options.out_dir = args.out_dir.empty() ? std::filesystem::path("out") / script.name
                                          : std::filesystem::path(args.out_dir);
   if (!args.frames.empty()) {
@@ -109,7 +124,10 @@ void run(const CaptureArgs& args) {
   }
   options.error_model_file = args.error_model;
   std::optional<double> budget = capture_error_budget(script, options);
-  if (options.error_budget_percent && script.technique_named && !args.quiet) {
+  if (options.error_budget_percent && args.technique && !args.quiet) {
+    std::fprintf(stderr, "planet: --technique %s wins over --error-budget: the governor is off\n",
+                 args.technique->c_str());
+  } else if (options.error_budget_percent && script.technique_named && !args.quiet) {
     std::fprintf(stderr,
                  "planet: %s names its technique (%s), which wins over --error-budget: the "
                  "governor is off\n",
@@ -123,12 +141,18 @@ void run(const CaptureArgs& args) {
   OutputFolder out(options.out_dir, "--out");
   auto context = GlContext::create_headless();
   if (!args.quiet) {
-    std::fprintf(stderr, "planet: %s, %dx%d, %d frames at %g fps, %s sky on %s\n",
-                 script.body.name.c_str(), script.width, script.height, script.frame_count(),
-                 script.frame_rate,
-                 budget ? fmt::format("governed (budget {:g} %)", *budget).c_str()
-                        : script.technique.c_str(),
-                 context->renderer().c_str());
+    // Where the first frame starts, both ways a script gives heights.
+    Geodetic start = FlightPath(script).place_at(script.frame_time(options.first_frame));
+    std::string sky = !script.body.has_atmosphere() ? "no atmosphere"
+                      : budget ? fmt::format("governed sky (budget {:g} %)", *budget)
+                               : script.technique + " sky";
+    std::fprintf(stderr,
+                 "planet: %s, %dx%d, %s at %g fps, %s on %s; frame %d at %.1f m above the "
+                 "ellipsoid, %.1f m above the ground\n",
+                 script.body.name.c_str(), script.width, script.height,
+                 count_of(script.frame_count(), "frame").c_str(), script.frame_rate, sky.c_str(),
+                 context->renderer().c_str(), options.first_frame, start.height,
+                 start.height - ground(script.body, start));
   }
   CaptureResult result;
   try {
@@ -140,9 +164,9 @@ void run(const CaptureArgs& args) {
   }
   out.keep();
   if (args.quiet) return;
-  std::printf("captured %d frames in %.1f s into %s (first %s, last %s)\n", result.frames,
-              result.wall_seconds, options.out_dir.string().c_str(),
-              result.first_png.filename().string().c_str(),
+  std::printf("captured %s in %.1f s into %s (first %s, last %s)\n",
+              count_of(result.frames, "frame").c_str(), result.wall_seconds,
+              options.out_dir.string().c_str(), result.first_png.filename().string().c_str(),
               result.last_png.filename().string().c_str());
 }
 
@@ -176,6 +200,17 @@ void add_capture_command(CLI::App& app) {
                   "error is within PCT percent (a technique the script names wins)");
   cmd->add_option("--error-model", args->error_model,
                   "The governor's table (default data/lab/error_model.json)");
+  cmd->add_option("--technique", args->technique,
+                  "Atmosphere technique name[:key=value,...], in place of the script's (wins "
+                  "over --error-budget)");
+  cmd->add_option("--width", args->width,
+                  "Image width in pixels, in place of the script's (alone: the height keeps the "
+                  "script's aspect)");
+  cmd->add_option("--height", args->height,
+                  "Image height in pixels, in place of the script's (alone: the width keeps the "
+                  "script's aspect)");
+  cmd->add_option("--scale", args->scale,
+                  "Scale the script's image size by this (0.25: a quarter the width and height)");
   cmd->callback([args] { run(*args); });
 }
 

@@ -302,6 +302,7 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
   }
 
   CaptureResult result;
+  const nlohmann::json overrides = overrides_json(options.overrides);
   Progress progress("capture " + script.name, end - first, "frame", !options.progress);
   // Ctrl-C: the frame in progress is finished, then the capture stops.
   InterruptScope interrupt;
@@ -331,6 +332,7 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
                                   renderer.terrain_stats(),
                                   decision ? decision->choice : script.technique);
     if (decision) side["governor"] = decision->to_json(*budget);
+    if (!overrides.empty()) side["overrides"] = overrides;
     // The frame's files, each whole, are made in the staging folder and
     // then moved into place together, the sidecar last: a capture killed at
     // any moment leaves whole frames, and a frame without its sidecar is
@@ -371,6 +373,7 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
       {"wall_seconds", result.wall_seconds},
   };
   if (script.glare) summary["image"]["glare"] = true;
+  if (!overrides.empty()) summary["overrides"] = overrides;
   // A share says what it is a share of, for the merge (capture_shares.h);
   // the merged capture.json is again the one a run at once writes.
   if (!options.share.whole()) {

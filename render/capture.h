@@ -6,6 +6,7 @@
 // removed first, so a capture that stops half-way never looks finished.
 #include "atmosphere/gpu/registry.h"
 #include "core/share.h"
+#include "render/capture_overrides.h"
 #include "sim/flight_script.h"
 
 #include <filesystem>
@@ -32,6 +33,9 @@ struct CaptureOptions {
   // Frames a switch fades over: 0 from the frame rate (a second, at least
   // 4); 1 switches at once (a pop, for the tests that must see one).
   int switch_fade_frames = 0;
+  // What the command line put in place of the script's own, already in the
+  // script the capture is given: recorded in every sidecar and capture.json.
+  CaptureOverrides overrides;
 };
 
 // The budget a capture of `script` runs the governor with: the command
