@@ -66,6 +66,14 @@ std::pair<int, int> parse_frame_range(const std::string& text) {
   return {parse(text.substr(0, colon), 0), parse(text.substr(colon + 1), -1)};
 }
 
+// Frames of an earlier, longer capture removed from the folder, and why.
+void print_removed(const FramesBeyond& removed, const std::string& out_dir) {
+  if (removed.count == 0) return;
+  std::printf(
+      "removed %s beyond the flight's end from %s (frames %d to %d, an earlier capture's)\n",
+      count_of(removed.count, "frame").c_str(), out_dir.c_str(), removed.first, removed.last);
+}
+
 // The shares' frames put together into --out, every share checked first.
 void run_merge(const CaptureArgs& args) {
   if (args.out_dir.empty()) throw InputError("capture --merge: --out is required");
@@ -80,6 +88,7 @@ void run_merge(const CaptureArgs& args) {
   std::printf("merged %s of %s (%.1f s of capture) into %s\n",
               count_of(merged.frames, "frame").c_str(), count_of(merged.shares, "share").c_str(),
               merged.wall_seconds, args.out_dir.c_str());
+  print_removed(merged.removed, args.out_dir);
 }
 
 void run(const CaptureArgs& args) {
@@ -168,6 +177,15 @@ void run(const CaptureArgs& args) {
               count_of(result.frames, "frame").c_str(), result.wall_seconds,
               options.out_dir.string().c_str(), result.first_png.filename().string().c_str(),
               result.last_png.filename().string().c_str());
+  // Frames earlier runs left (the run this one resumes, the slices before):
+  // capture.json describes them all.
+  const int end = options.end_frame < 0 ? script.frame_count() : options.end_frame;
+  if (result.folder.first != options.first_frame || result.folder.end != end) {
+    std::printf("%s holds frames %d to %d of %d, whole (%.1f s of capture, the runs' together)\n",
+                options.out_dir.string().c_str(), result.folder.first, result.folder.end - 1,
+                script.frame_count(), result.folder.wall_seconds);
+  }
+  print_removed(result.removed, options.out_dir.string());
 }
 
 }  // namespace

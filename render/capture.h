@@ -6,6 +6,7 @@
 // removed first, so a capture that stops half-way never looks finished.
 #include "atmosphere/gpu/registry.h"
 #include "core/share.h"
+#include "render/capture_folder.h"
 #include "render/capture_overrides.h"
 #include "sim/flight_script.h"
 
@@ -44,9 +45,13 @@ std::optional<double> capture_error_budget(const FlightScript& script,
                                            const CaptureOptions& options);
 
 struct CaptureResult {
-  int frames = 0;
+  int frames = 0;  // this run's
   double wall_seconds = 0;
   std::filesystem::path first_png, last_png;
+  // The frames the folder holds whole after this run, with those earlier
+  // runs left (capture.json's), and an earlier, longer capture's removed.
+  FolderFrames folder;
+  FramesBeyond removed;
 };
 
 // Ctrl-C during a capture: the frame in progress is finished and written,
