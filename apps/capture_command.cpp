@@ -8,6 +8,7 @@
 #include "render/capture.h"
 #include "render/capture_shares.h"
 #include "sim/flight_script.h"
+#include "terrain/ground.h"
 
 #include <fmt/format.h>
 
@@ -31,7 +32,16 @@ struct CaptureArgs {
   double error_budget = std::nan("");  // NaN: none given
   std::string error_model;
   bool glare = false;
+  // In place of the script's own (render/capture_overrides.h).
+  std::optional<std::string> technique;
+  std::optional<int> width, height;
+  std::optional<double> scale;
 };
+
+// "1 frame", "41 frames".
+std::string count_of(int n, const char* thing) {
+  return fmt::format("{} {}{}", n, thing, n == 1 ? "" : "s");
+}
 
 // "A:B" (B exclusive), "A:" or ":B".
 std::pair<int, int> parse_frame_range(const std::string& text) {
@@ -56,6 +66,14 @@ std::pair<int, int> parse_frame_range(const std::string& text) {
   return {parse(text.substr(0, colon), 0), parse(text.substr(colon + 1), -1)};
 }
 
+// Frames of an earlier, longer capture removed from the folder, and why.
+void print_removed(const FramesBeyond& removed, const std::string& out_dir) {
+  if (removed.count == 0) return;
+  std::printf(
+      "removed %s beyond the flight's end from %s (frames %d to %d, an earlier capture's)\n",
+      count_of(removed.count, "frame").c_str(), out_dir.c_str(), removed.first, removed.last);
+}
+
 // The shares' frames put together into --out, every share checked first.
 void run_merge(const CaptureArgs& args) {
   if (args.out_dir.empty()) throw InputError("capture --merge: --out is required");
@@ -67,8 +85,10 @@ void run_merge(const CaptureArgs& args) {
   std::vector<std::filesystem::path> inputs(args.merge.begin(), args.merge.end());
   MergedCapture merged = merge_capture_shares(inputs, args.out_dir);
   if (args.quiet) return;
-  std::printf("merged %d frames of %d shares (%.1f s of capture) into %s\n", merged.frames,
-              merged.shares, merged.wall_seconds, args.out_dir.c_str());
+  std::printf("merged %s of %s (%.1f s of capture) into %s\n",
+              count_of(merged.frames, "frame").c_str(), count_of(merged.shares, "share").c_str(),
+              merged.wall_seconds, args.out_dir.c_str());
+  print_removed(merged.removed, args.out_dir);
 }
 
 void run(const CaptureArgs& args) {
@@ -77,9 +97,17 @@ void run(const CaptureArgs& args) {
     return;
   }
   if (args.flight_file.empty()) throw InputError("capture: --flight is required");
-  FlightScript script = load_flight_script(args.flight_file);
+  // The ground under the keyframes, for those given above it and the
+  // checks below: the body's terrain, read once.
+  GroundHeight ground = terrain_ground();
+  FlightScript script = load_flight_script(args.flight_file, ground);
   if (args.glare) script.glare = true;
   CaptureOptions options;
+  options.overrides.technique = args.technique;
+  options.overrides.width = args.width;
+  options.overrides.height = args.height;
+  options.overrides.scale = args.scale;
+  apply_capture_overrides(script, options.overrides);
   options.out_dir = args.out_dir.empty() ? std::filesystem::path("out") / script.name
                                          : std::filesystem::path(args.out_dir);
   if (!args.frames.empty()) {
@@ -105,7 +133,10 @@ void run(const CaptureArgs& args) {
   }
   options.error_model_file = args.error_model;
   std::optional<double> budget = capture_error_budget(script, options);
-  if (options.error_budget_percent && script.technique_named && !args.quiet) {
+  if (options.error_budget_percent && args.technique && !args.quiet) {
+    std::fprintf(stderr, "planet: --technique %s wins over --error-budget: the governor is off\n",
+                 args.technique->c_str());
+  } else if (options.error_budget_percent && script.technique_named && !args.quiet) {
     std::fprintf(stderr,
                  "planet: %s names its technique (%s), which wins over --error-budget: the "
                  "governor is off\n",
@@ -115,16 +146,22 @@ void run(const CaptureArgs& args) {
     load_error_model(options.error_model_file.empty() ? shipped_error_model_file()
                                                       : options.error_model_file);
   }
-  check_keyframes_above_ground(script);
+  check_keyframes_above_ground(script, ground);
   OutputFolder out(options.out_dir, "--out");
   auto context = GlContext::create_headless();
   if (!args.quiet) {
-    std::fprintf(stderr, "planet: %s, %dx%d, %d frames at %g fps, %s sky on %s\n",
-                 script.body.name.c_str(), script.width, script.height, script.frame_count(),
-                 script.frame_rate,
-                 budget ? fmt::format("governed (budget {:g} %)", *budget).c_str()
-                        : script.technique.c_str(),
-                 context->renderer().c_str());
+    // Where the first frame starts, both ways a script gives heights.
+    Geodetic start = FlightPath(script).place_at(script.frame_time(options.first_frame));
+    std::string sky = !script.body.has_atmosphere() ? "no atmosphere"
+                      : budget ? fmt::format("governed sky (budget {:g} %)", *budget)
+                               : script.technique + " sky";
+    std::fprintf(stderr,
+                 "planet: %s, %dx%d, %s at %g fps, %s on %s; frame %d at %.1f m above the "
+                 "ellipsoid, %.1f m above the ground\n",
+                 script.body.name.c_str(), script.width, script.height,
+                 count_of(script.frame_count(), "frame").c_str(), script.frame_rate, sky.c_str(),
+                 context->renderer().c_str(), options.first_frame, start.height,
+                 start.height - ground(script.body, start));
   }
   CaptureResult result;
   try {
@@ -136,10 +173,19 @@ void run(const CaptureArgs& args) {
   }
   out.keep();
   if (args.quiet) return;
-  std::printf("captured %d frames in %.1f s into %s (first %s, last %s)\n", result.frames,
-              result.wall_seconds, options.out_dir.string().c_str(),
-              result.first_png.filename().string().c_str(),
+  std::printf("captured %s in %.1f s into %s (first %s, last %s)\n",
+              count_of(result.frames, "frame").c_str(), result.wall_seconds,
+              options.out_dir.string().c_str(), result.first_png.filename().string().c_str(),
               result.last_png.filename().string().c_str());
+  // Frames earlier runs left (the run this one resumes, the slices before):
+  // capture.json describes them all.
+  const int end = options.end_frame < 0 ? script.frame_count() : options.end_frame;
+  if (result.folder.first != options.first_frame || result.folder.end != end) {
+    std::printf("%s holds frames %d to %d of %d, whole (%.1f s of capture, the runs' together)\n",
+                options.out_dir.string().c_str(), result.folder.first, result.folder.end - 1,
+                script.frame_count(), result.folder.wall_seconds);
+  }
+  print_removed(result.removed, options.out_dir.string());
 }
 
 }  // namespace
@@ -172,6 +218,17 @@ void add_capture_command(CLI::App& app) {
                   "error is within PCT percent (a technique the script names wins)");
   cmd->add_option("--error-model", args->error_model,
                   "The governor's table (default data/lab/error_model.json)");
+  cmd->add_option("--technique", args->technique,
+                  "Atmosphere technique name[:key=value,...], in place of the script's (wins "
+                  "over --error-budget)");
+  cmd->add_option("--width", args->width,
+                  "Image width in pixels, in place of the script's (alone: the height keeps the "
+                  "script's aspect)");
+  cmd->add_option("--height", args->height,
+                  "Image height in pixels, in place of the script's (alone: the width keeps the "
+                  "script's aspect)");
+  cmd->add_option("--scale", args->scale,
+                  "Scale the script's image size by this (0.25: a quarter the width and height)");
   cmd->callback([args] { run(*args); });
 }
 

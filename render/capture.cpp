@@ -11,7 +11,6 @@
 #include "governor/governor.h"
 #include "render/frame.h"
 #include "render/technique_switch.h"
-#include "terrain/ground.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -33,6 +32,18 @@ namespace {
 // Generous: the deepest view (2 m above mountains) builds a few hundred
 // tiles, seconds on one core.
 constexpr double kTerrainWaitSeconds = 300.0;
+
+// The image's settings as the sidecars and capture.json give them.
+nlohmann::json image_json(const FlightScript& script) {
+  nlohmann::json image = {{"width", script.width},
+                          {"height", script.height},
+                          {"antialiasing", script.antialiasing},
+                          {"terrain_shadows", script.terrain_shadows},
+                          {"stars", script.stars}};
+  // Only when asked: a capture without glare keeps the bytes it had.
+  if (script.glare) image["glare"] = true;
+  return image;
+}
 
 nlohmann::json sidecar(const FlightScript& script, const FlightPath& path, const Geodesy& geodesy,
                        int frame, double t, const Camera& camera, double exposure,
@@ -66,12 +77,7 @@ nlohmann::json sidecar(const FlightScript& script, const FlightPath& path, const
       {"technique", technique},
       {"exposure", exposure},
       {"exposure_mode", script.auto_exposure ? "auto" : "script"},
-      {"image",
-       {{"width", script.width},
-        {"height", script.height},
-        {"antialiasing", script.antialiasing},
-        {"terrain_shadows", script.terrain_shadows},
-        {"stars", script.stars}}},
+      {"image", image_json(script)},
       {"gpu_ms", passes},
       {"passes_reused", reused},
       {"terrain",
@@ -83,8 +89,6 @@ nlohmann::json sidecar(const FlightScript& script, const FlightPath& path, const
         {"deepest_level", terrain.max_level}}},
   };
   if (script.has_clock) j["utc"] = format_utc(path.utc_at(t));
-  // Only when asked: a capture without glare keeps the bytes it had.
-  if (script.glare) j["image"]["glare"] = true;
   return j;
 }
 
@@ -103,13 +107,16 @@ namespace {
 // The sidecar's fields as "planet:" header attributes: nested objects
 // joined with ':', numbers as doubles, three numbers as a vector, anything
 // else as its JSON text. But for those that are not the frame's own: its
-// timings (which differ run to run), and what the tile cache holds and
-// which passes were reused (which depend on the frames rendered before it,
-// so on the --frames slice).
+// timings (GPU and wall, which differ run to run), and what the tile cache
+// holds and which passes were reused (which depend on the frames rendered
+// before it, so on the --frames slice).
 void add_sidecar_attributes(const nlohmann::json& j, const std::string& prefix,
                             std::vector<ImageAttribute>& out) {
   for (const auto& [key, value] : j.items()) {
-    if (prefix == "planet:" && (key == "gpu_ms" || key == "passes_reused")) continue;
+    if (prefix == "planet:" &&
+        (key == "gpu_ms" || key == "wall_seconds" || key == "passes_reused")) {
+      continue;
+    }
     if (prefix == "planet:terrain:" && (key == "tiles_resident" || key == "bytes_resident")) {
       continue;
     }
@@ -164,30 +171,6 @@ ExrExtras frame_exr_extras(const FlightScript& script, const FlightPath& path, d
   return extras;
 }
 
-// A frame is published as its images and then its sidecar, three renames:
-// a capture killed between them leaves the images of a frame that is not
-// one. Those of the frames [first, end) go before a capture writes them
-// again, so that a resumed folder holds whole frames only even if this run
-// stops early; other frames are left to whoever writes them (a slice
-// running beside this one into the same folder).
-void remove_frames_without_sidecar(const std::filesystem::path& dir, int first, int end) {
-  std::error_code ec;
-  std::vector<std::filesystem::path> orphans;
-  for (const auto& entry : std::filesystem::directory_iterator(dir, ec)) {
-    const std::filesystem::path& file = entry.path();
-    std::string name = file.filename().string(), ext = file.extension().string();
-    int frame = -1;
-    if (std::sscanf(name.c_str(), "frame_%d.", &frame) != 1 || frame < first || frame >= end ||
-        (ext != ".exr" && ext != ".png")) {
-      continue;
-    }
-    std::filesystem::path side = file;
-    side.replace_extension(".json");
-    if (!std::filesystem::exists(side, ec)) orphans.push_back(file);
-  }
-  for (const auto& file : orphans) std::filesystem::remove(file, ec);
-}
-
 }  // namespace
 
 void check_frames(const FlightScript& script, const CaptureOptions& options) {
@@ -213,19 +196,20 @@ std::string flight_script_hash(const FlightScript& script) {
   return fmt::format("{:016x}", fnv1a(text.str()));
 }
 
-void check_keyframes_above_ground(const FlightScript& script) {
+void check_keyframes_above_ground(const FlightScript& script, const GroundHeight& ground) {
   if (script.allow_below_ground) return;
-  TerrainSurface surface(script.body.shape, parse_terrain(script.body));
-  Geodesy geodesy(script.body.shape);
   for (size_t i = 0; i < script.keyframes.size(); ++i) {
-    const Geodetic& place = script.keyframes[i].place;
-    double ground = ground_height(surface, geodesy, place);
-    if (place.height < ground) {
+    const Keyframe& k = script.keyframes[i];
+    double ground_m = ground(script.body, k.place);
+    if (k.place.height < ground_m) {
+      std::string given = k.height_above_ground
+                              ? fmt::format("height_above_ground_m {:.1f}", *k.height_above_ground)
+                              : fmt::format("height_m {:.1f}", k.place.height);
       throw InputError(fmt::format(
-          "{}: keyframes[{}]: the camera is {:.1f} m below the ground (height_m {:.1f}, the "
-          "ground {:.1f} m above the ellipsoid there; planet probe ground gives it): raise it, or "
-          "set \"allow_below_ground\": true",
-          script.file.string(), i, ground - place.height, place.height, ground));
+          "{}: keyframes[{}]: the camera is {:.1f} m below the ground ({}, the ground {:.1f} m "
+          "above the ellipsoid there; planet probe ground gives it): raise it, or set "
+          "\"allow_below_ground\": true",
+          script.file.string(), i, ground_m - k.place.height, given, ground_m));
     }
   }
 }
@@ -269,6 +253,11 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
   std::filesystem::remove(finished_marker);
   remove_stale_partials(options.out_dir);
   remove_frames_without_sidecar(options.out_dir, first, end);
+  CaptureResult result;
+  // Frames beyond this flight's last are an earlier, longer capture's: no
+  // slice of this one writes them, and they would make the folder look
+  // like more than it is.
+  result.removed = remove_frames_beyond(options.out_dir, total);
   StagingFolder staging(options.out_dir);
 
   FrameRenderer renderer(script.width, script.height);
@@ -301,11 +290,12 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
     for (int frame = 0; frame < first; ++frame) decide(frame);
   }
 
-  CaptureResult result;
+  const nlohmann::json overrides = overrides_json(options.overrides);
   Progress progress("capture " + script.name, end - first, "frame", !options.progress);
   // Ctrl-C: the frame in progress is finished, then the capture stops.
   InterruptScope interrupt;
   auto start = std::chrono::steady_clock::now();
+  auto frame_start = start;
   for (int frame = first; frame < end; ++frame) {
     if (interrupt.interrupted()) {
       progress.finish();
@@ -326,11 +316,12 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
     renderer.set_star_orientation(body_from_icrf(script.body, path.utc_at(t)));
     FrameStats stats = renderer.render(camera, sun, exposure);
     exposure = renderer.last_exposure();
-    std::string stem = fmt::format("frame_{:05d}", frame);
+    std::string stem = frame_stem(frame);
     nlohmann::json side = sidecar(script, path, geodesy, frame, t, camera, exposure, sun, stats,
                                   renderer.terrain_stats(),
                                   decision ? decision->choice : script.technique);
     if (decision) side["governor"] = decision->to_json(*budget);
+    if (!overrides.empty()) side["overrides"] = overrides;
     // The frame's files, each whole, are made in the staging folder and
     // then moved into place together, the sidecar last: a capture killed at
     // any moment leaves whole frames, and a frame without its sidecar is
@@ -340,6 +331,11 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
                 renderer.read_hdr(), frame_exr_extras(script, path, t, camera, side, renderer));
       write_png(staging.path() / (stem + ".png"), script.width, script.height,
                 renderer.read_ldr());
+      // The frame's time, from the end of the one before: the sum over a
+      // folder's frames is the time its runs spent on them (capture.json).
+      auto now = std::chrono::steady_clock::now();
+      side["wall_seconds"] = std::chrono::duration<double>(now - frame_start).count();
+      frame_start = now;
       write_file_atomically(staging.path() / (stem + ".json"), side.dump(2) + "\n");
     } catch (const SystemError& e) {
       throw SystemError(staging.as_published(e.what()));
@@ -357,20 +353,34 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   progress.finish();
 
+  // capture.json describes the folder: this run's frames and those
+  // earlier runs (an interrupted one, the slices before) left beside them
+  // whole, of this capture, and the time they all took. A share keeps to
+  // its own frames.
+  const nlohmann::json image = image_json(script);
+  auto of_this_capture = [&](int frame, const nlohmann::json& side) {
+    double t = script.frame_time(frame);
+    glm::dvec3 pos = path.camera_at(t).pos_body;
+    return side.at("frame") == frame && side.at("time_s") == t &&
+           side.at("body") == script.body.name && side.at("image") == image &&
+           side.at("camera").at("position_body_m") == nlohmann::json{pos.x, pos.y, pos.z} &&
+           (budget || side.at("technique") == script.technique) &&
+           side.value("overrides", nlohmann::json::object()) == overrides;
+  };
+  const std::pair<int, int> bounds =
+      options.share.whole() ? std::pair{0, total} : std::pair{first, end};
+  result.folder = whole_frames_around(options.out_dir, first, end, bounds.first, bounds.second,
+                                      of_this_capture);
   nlohmann::json summary = {
       {"flight", script.file.string()},
-      {"frames", {{"first", first}, {"end", end}, {"total_in_flight", total}}},
+      {"frames",
+       {{"first", result.folder.first}, {"end", result.folder.end}, {"total_in_flight", total}}},
       {"frame_rate", script.frame_rate},
-      {"image",
-       {{"width", script.width},
-        {"height", script.height},
-        {"antialiasing", script.antialiasing},
-        {"terrain_shadows", script.terrain_shadows},
-        {"stars", script.stars}}},
+      {"image", image},
       {"technique", budget ? fmt::format("governor, budget {:g} %", *budget) : script.technique},
-      {"wall_seconds", result.wall_seconds},
+      {"wall_seconds", result.folder.wall_seconds},
   };
-  if (script.glare) summary["image"]["glare"] = true;
+  if (!overrides.empty()) summary["overrides"] = overrides;
   // A share says what it is a share of, for the merge (capture_shares.h);
   // the merged capture.json is again the one a run at once writes.
   if (!options.share.whole()) {

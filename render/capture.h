@@ -6,6 +6,8 @@
 // removed first, so a capture that stops half-way never looks finished.
 #include "atmosphere/gpu/registry.h"
 #include "core/share.h"
+#include "render/capture_folder.h"
+#include "render/capture_overrides.h"
 #include "sim/flight_script.h"
 
 #include <filesystem>
@@ -32,6 +34,9 @@ struct CaptureOptions {
   // Frames a switch fades over: 0 from the frame rate (a second, at least
   // 4); 1 switches at once (a pop, for the tests that must see one).
   int switch_fade_frames = 0;
+  // What the command line put in place of the script's own, already in the
+  // script the capture is given: recorded in every sidecar and capture.json.
+  CaptureOverrides overrides;
 };
 
 // The budget a capture of `script` runs the governor with: the command
@@ -40,9 +45,13 @@ std::optional<double> capture_error_budget(const FlightScript& script,
                                            const CaptureOptions& options);
 
 struct CaptureResult {
-  int frames = 0;
+  int frames = 0;  // this run's
   double wall_seconds = 0;
   std::filesystem::path first_png, last_png;
+  // The frames the folder holds whole after this run, with those earlier
+  // runs left (capture.json's), and an earlier, longer capture's removed.
+  FolderFrames folder;
+  FramesBeyond removed;
 };
 
 // Ctrl-C during a capture: the frame in progress is finished and written,
@@ -60,10 +69,10 @@ TechniqueChoice script_technique(const FlightScript& script);
 // flight's.
 void check_frames(const FlightScript& script, const CaptureOptions& options);
 
-// Every keyframe above the ground under it (terrain/ground.h), unless the
-// script allows otherwise: InputError naming the keyframe, its height and
-// the ground's. No GL needed.
-void check_keyframes_above_ground(const FlightScript& script);
+// Every keyframe above the ground under it (`ground`, terrain_ground() of
+// terrain/ground.h), unless the script allows otherwise: InputError naming
+// the keyframe, its height and the ground's. No GL needed.
+void check_keyframes_above_ground(const FlightScript& script, const GroundHeight& ground);
 
 // What identifies the flight a capture renders: a hash of its script's
 // text, 16 hex digits. A share's capture.json holds it, with the

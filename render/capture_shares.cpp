@@ -187,6 +187,7 @@ MergedCapture merge_capture_shares(const std::vector<std::filesystem::path>& inp
   std::filesystem::remove(marker);
   MergedCapture merged;
   merged.shares = count;
+  merged.removed = remove_frames_beyond(out, total);
   for (const CaptureShare* s : by_index) {
     for (int frame = s->first; frame < s->end; ++frame) {
       for (const std::string& kind : kinds) {

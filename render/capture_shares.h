@@ -6,6 +6,7 @@
 // rendered before them, so the merged folder's images are the bytes of one
 // run's.
 #include "core/share.h"
+#include "render/capture_folder.h"
 #include "sim/flight_script.h"
 
 #include <filesystem>
@@ -27,6 +28,7 @@ struct MergedCapture {
   int frames = 0;
   int shares = 0;
   double wall_seconds = 0;  // the shares' together
+  FramesBeyond removed;     // of an earlier, longer capture into `out`
 };
 
 // Checks that `inputs` (share folders, or folders holding share-K-of-N
@@ -35,7 +37,10 @@ struct MergedCapture {
 // program version, with every frame's files; then copies their frames
 // into `out` and writes its capture.json last: a run at once's, but for
 // its wall time, the shares' together. Nothing is written where a check
-// fails: InputError naming the share and what is wrong.
+// fails: InputError naming the share and what is wrong. Frames in `out`
+// beyond the flight's last, an earlier and longer capture's, are removed
+// as a run at once removes them (the merge overwrites that capture's other
+// frames anyway).
 MergedCapture merge_capture_shares(const std::vector<std::filesystem::path>& inputs,
                                    const std::filesystem::path& out);
 

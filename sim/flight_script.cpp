@@ -54,9 +54,38 @@ glm::dquat look_at(const Geodesy& geodesy, const glm::dvec3& eye, const glm::dve
   return glm::normalize(glm::quat_cast(glm::dmat3(right, up, -forward)));
 }
 
+// A place's height, above the ellipsoid ("height_m") or above the ground
+// under it ("height_above_ground_m"), as metres above the ellipsoid; the
+// second also into `above_ground`. Below the ground is allowed a little (a
+// cave, a trench) but not deep inside the body, where the geodetic mapping
+// stops meaning anything.
+double read_height(JsonObject& o, const Body& body, const Geodetic& place,
+                   const GroundHeight& ground, double min_height, std::optional<double> fallback,
+                   std::optional<double>* above_ground) {
+  if (o.has("height_m") && o.has("height_above_ground_m")) {
+    o.fail(
+        "\"height_m\" (above the ellipsoid) and \"height_above_ground_m\" (above the "
+        "ground) both given: give one");
+  }
+  if (!o.has("height_above_ground_m")) {
+    if (!o.has("height_m") && !fallback) {
+      o.fail(
+          "give \"height_m\" (above the ellipsoid) or \"height_above_ground_m\" (above "
+          "the ground)");
+    }
+    return o.number_or("height_m", fallback.value_or(0.0), min_height, 1e12);
+  }
+  double above = o.number("height_above_ground_m", min_height, 1e12);
+  if (!ground) o.fail("height_above_ground_m", "this reader knows no ground to count from");
+  double height = ground(body, place) + above;
+  if (height < min_height) o.fail("height_above_ground_m", "is deep inside the body");
+  if (above_ground) *above_ground = above;
+  return height;
+}
+
 }  // namespace
 
-FlightScript load_flight_script(const std::filesystem::path& file) {
+FlightScript load_flight_script(const std::filesystem::path& file, const GroundHeight& ground) {
   JsonObject root = JsonObject::load(file);
   FlightScript s;
   s.file = file;
@@ -156,7 +185,8 @@ FlightScript load_flight_script(const std::filesystem::path& file) {
     // Position: geodetic, recorded body-frame, or where the previous
     // keyframe's orbit has carried the camera.
     if (orbit_before) {
-      for (const char* key : {"lat_deg", "lon_deg", "height_m", "position_body_m"}) {
+      for (const char* key :
+           {"lat_deg", "lon_deg", "height_m", "height_above_ground_m", "position_body_m"}) {
         if (k.has(key)) k.fail(key, "the position comes from the orbit of the keyframe before");
       }
       const Keyframe& prev = s.keyframes.back();
@@ -170,9 +200,8 @@ FlightScript load_flight_script(const std::filesystem::path& file) {
     } else {
       f.place.lat = glm::radians(k.number("lat_deg", -90.0, 90.0));
       f.place.lon = glm::radians(k.number("lon_deg", -180.0, 180.0));
-      // Below the ground is allowed a little (a cave, a trench) but not deep
-      // inside the body, where the geodetic mapping stops meaning anything.
-      f.place.height = k.number("height_m", min_height, 1e12);
+      f.place.height =
+          read_height(k, s.body, f.place, ground, min_height, std::nullopt, &f.height_above_ground);
       f.pos_body = geodesy.body_from_geodetic(f.place);
     }
     orbit_before = false;
@@ -204,8 +233,8 @@ FlightScript load_flight_script(const std::filesystem::path& file) {
     } else if (k.has("look_at")) {
       JsonObject t = k.object("look_at");
       Geodetic target{glm::radians(t.number("lat_deg", -90.0, 90.0)),
-                      glm::radians(t.number("lon_deg", -180.0, 180.0)),
-                      t.number_or("height_m", 0.0, min_height, 1e12)};
+                      glm::radians(t.number("lon_deg", -180.0, 180.0)), 0.0};
+      target.height = read_height(t, s.body, target, ground, min_height, 0.0, nullptr);
       t.finish();
       glm::dvec3 target_body = geodesy.body_from_geodetic(target);
       if (glm::length(target_body - f.pos_body) < 1e-3) k.fail("look_at", "is where the camera is");

@@ -12,6 +12,7 @@
 #include "sim/utc_time.h"
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -20,7 +21,10 @@ namespace planet {
 
 struct Keyframe {
   double time = 0;  // seconds from the start of the flight
-  Geodetic place;
+  Geodetic place;   // its height above the ellipsoid, however the file gave it
+  // "height_above_ground_m" as the file gave it, where it gave that rather
+  // than "height_m" (above the ellipsoid).
+  std::optional<double> height_above_ground;
   double heading = 0, pitch = 0, roll = 0;  // radians, see enu_from_camera
   double exposure = 1;                      // the script's unless the keyframe gives its own
   // Resolved at load: the camera's attitude (from heading/pitch/roll, a
@@ -81,7 +85,15 @@ struct FlightScript {
   double frame_time(int frame) const;
 };
 
-FlightScript load_flight_script(const std::filesystem::path& file);
+// The ground's height above the ellipsoid under a place of a body: what a
+// keyframe's "height_above_ground_m" counts from. sim knows no terrain; the
+// terrain's ground is terrain_ground() (terrain/ground.h).
+using GroundHeight = std::function<double(const Body& body, const Geodetic& place)>;
+
+// A keyframe gives its height as "height_m" above the ellipsoid or as
+// "height_above_ground_m" above the ground under it, which `ground` gives
+// (without it such a keyframe is refused).
+FlightScript load_flight_script(const std::filesystem::path& file, const GroundHeight& ground = {});
 
 // Samples a flight at any time: positions and angles on monotone cubics
 // through the keyframes.

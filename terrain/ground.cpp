@@ -1,5 +1,11 @@
 #include "terrain/ground.h"
 
+#include "terrain/terrain_config.h"
+
+#include <memory>
+#include <optional>
+#include <string>
+
 namespace planet {
 
 glm::dvec3 ground_point(const TerrainSurface& surface, const Geodesy& geodesy,
@@ -11,6 +17,23 @@ glm::dvec3 ground_point(const TerrainSurface& surface, const Geodesy& geodesy,
 
 double ground_height(const TerrainSurface& surface, const Geodesy& geodesy, const Geodetic& place) {
   return geodesy.geodetic_from_body(ground_point(surface, geodesy, place)).height;
+}
+
+GroundHeight terrain_ground() {
+  struct Surface {
+    std::string body;
+    std::optional<TerrainSurface> surface;
+    std::optional<Geodesy> geodesy;
+  };
+  auto kept = std::make_shared<Surface>();
+  return [kept](const Body& body, const Geodetic& place) {
+    if (!kept->surface || kept->body != body.name) {
+      kept->surface.emplace(body.shape, parse_terrain(body));
+      kept->geodesy.emplace(body.shape);
+      kept->body = body.name;
+    }
+    return ground_height(*kept->surface, *kept->geodesy, place);
+  };
 }
 
 }  // namespace planet

@@ -40,7 +40,7 @@ for n in names(a):
     if n.endswith(".json"):
         ja, jb = json.load(open(pa)), json.load(open(pb))
         for j in (ja, jb):
-            j.pop("gpu_ms", None); j.pop("passes_reused", None)
+            j.pop("gpu_ms", None); j.pop("wall_seconds", None); j.pop("passes_reused", None)
             j["terrain"].pop("tiles_resident", None); j["terrain"].pop("bytes_resident", None)
         if ja != jb:
             sys.exit(f"{n}: sidecars differ beyond their measurements")

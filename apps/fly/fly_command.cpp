@@ -13,6 +13,7 @@
 #include "sim/free_flight.h"
 #include "sim/kepler.h"
 #include "sim/orbit_flight.h"
+#include "terrain/ground.h"
 
 #include <fmt/format.h>
 
@@ -36,7 +37,7 @@ void run(const FlyArgs& args) {
         "--antialiasing: {} samples a pixel: give 1 (none), 2, 4, 8 or 16, or 0 for the default",
         args.antialiasing));
   }
-  if (!args.flight_file.empty()) load_flight_script(args.flight_file);
+  if (!args.flight_file.empty()) load_flight_script(args.flight_file, terrain_ground());
   checked_latitude_deg(args.lat_deg, "--lat");
   checked_longitude_deg(args.lon_deg, "--lon");
   if (args.orbit_inclination_deg > 180.0) {

@@ -79,7 +79,7 @@ FlySession::FlySession(const FlyArgs& args, GLFWwindow* window, FlyInput& input,
   renderer_->set_stars(true);
   renderer_->set_auto_exposure(args.auto_exposure);
   if (!args.flight_file.empty()) {
-    FlightScript script = load_flight_script(args.flight_file);
+    FlightScript script = load_flight_script(args.flight_file, terrain_ground());
     technique_ = script.technique;
     if (!args.technique_given && !script.technique_named) {
       error_budget_ = args.error_budget > 0 ? args.error_budget

@@ -6,6 +6,7 @@
 #include "lab/scene.h"
 #include "render/capture_shares.h"
 #include "sim/flight_script.h"
+#include "terrain/ground.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -118,7 +119,7 @@ ClusterJob plan_cluster_job(const std::vector<std::string>& args, int tasks) {
   } else if (command == "capture") {
     std::optional<std::string> flight = line.get("--flight");
     if (!flight || flight->empty()) throw InputError("cluster: capture needs --flight");
-    FlightScript script = load_flight_script(*flight);
+    FlightScript script = load_flight_script(*flight, terrain_ground());
     if (tasks > script.frame_count()) {
       throw InputError(fmt::format("cluster: --tasks {}: {} has {} frames, too few for {} shares",
                                    tasks, *flight, script.frame_count(), tasks));

@@ -184,6 +184,67 @@ TEST_F(FlightScriptTest, BadBodyFileNamesTheBodyFileAndField) {
                {"weird.json", "shape.type", "torus"});
 }
 
+// A keyframe's height is above the ellipsoid ("height_m") or above the
+// ground under it ("height_above_ground_m"), here a ground 1000 m up.
+TEST_F(FlightScriptTest, AHeightAboveTheGroundCountsFromTheGroundUnderTheKeyframe) {
+  std::vector<Geodetic> asked;
+  GroundHeight ground = [&](const Body& body, const Geodetic& place) {
+    EXPECT_EQ(body.name, "Earth");
+    asked.push_back(place);
+    return 1000.0;
+  };
+  FlightScript s = load_flight_script(
+      write("ok.json", script("\"height_m\": 1000,", "\"height_above_ground_m\": 2,")), ground);
+  ASSERT_EQ(asked.size(), 1u);  // the one keyframe that counts from the ground
+  EXPECT_NEAR(glm::degrees(asked[0].lat), 10.0, 1e-12);
+  EXPECT_NEAR(glm::degrees(asked[0].lon), -170.0, 1e-12);
+  const Keyframe& k = s.keyframes[1];
+  EXPECT_DOUBLE_EQ(k.place.height, 1002.0);
+  ASSERT_TRUE(k.height_above_ground);
+  EXPECT_DOUBLE_EQ(*k.height_above_ground, 2.0);
+  EXPECT_FALSE(s.keyframes[0].height_above_ground);
+  // The pose is the one the same place above the ellipsoid gives.
+  FlightScript same =
+      load_flight_script(write("same.json", script("\"height_m\": 1000,", "\"height_m\": 1002,")));
+  EXPECT_EQ(k.pos_body, same.keyframes[1].pos_body);
+  EXPECT_EQ(k.body_from_camera, same.keyframes[1].body_from_camera);
+}
+
+TEST_F(FlightScriptTest, BothHeightsInOneKeyframeOrNeitherIsRefused) {
+  GroundHeight ground = [](const Body&, const Geodetic&) { return 0.0; };
+  auto both = write("both.json", script("\"height_m\": 1000,",
+                                        "\"height_m\": 1000, \"height_above_ground_m\": 2,"));
+  auto neither = write("neither.json", script("\"height_m\": 1000,", ""));
+  auto expect = [&](const std::filesystem::path& file, std::vector<std::string> fragments) {
+    try {
+      load_flight_script(file, ground);
+      ADD_FAILURE() << "no error for " << file;
+    } catch (const InputError& e) {
+      std::string what = e.what();
+      for (const auto& f : fragments) EXPECT_NE(what.find(f), std::string::npos) << what;
+    }
+  };
+  expect(both, {"both.json", "keyframes[1]", "\"height_m\" (above the ellipsoid) and",
+                "\"height_above_ground_m\" (above the ground) both given"});
+  expect(neither, {"neither.json", "keyframes[1]", "give \"height_m\" (above the ellipsoid) or"});
+  // Without a ground to count from (a reader given none), refused too.
+  expect_error(
+      write("no_ground.json", script("\"height_m\": 1000,", "\"height_above_ground_m\": 2,")),
+      {"keyframes[1].height_above_ground_m", "no ground"});
+}
+
+TEST_F(FlightScriptTest, ALookAtTargetMayCountItsHeightFromTheGround) {
+  GroundHeight ground = [](const Body&, const Geodetic&) { return 3000.0; };
+  auto above_ground = write("a.json", script("\"heading_deg\": 95}",
+                                             "\"look_at\": {\"lat_deg\": 12, \"lon_deg\": -160, "
+                                             "\"height_above_ground_m\": 10}}"));
+  auto above_ellipsoid = write(
+      "b.json", script("\"heading_deg\": 95}",
+                       "\"look_at\": {\"lat_deg\": 12, \"lon_deg\": -160, \"height_m\": 3010}}"));
+  EXPECT_EQ(load_flight_script(above_ground, ground).keyframes[2].body_from_camera,
+            load_flight_script(above_ellipsoid).keyframes[2].body_from_camera);
+}
+
 }  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet
