@@ -1,4 +1,5 @@
 // planet capture: a scripted flight rendered headless into EXR + PNG frames.
+#include "apps/cli_options.h"
 #include "apps/commands.h"
 #include "core/error.h"
 #include "core/paths.h"
@@ -209,10 +210,10 @@ void add_capture_command(CLI::App& app) {
                 "{\"glare\": true})");
   cmd->add_option("--pixel-budget", args->pixel_budget,
                   "Terrain detail: largest projected geometric error in pixels")
-      ->check(CLI::Range(0.1, 100.0));
+      ->check(within(0.1, 100.0));
   cmd->add_option("--terrain-cache-mib", args->terrain_cache_mib,
                   "Terrain tiles kept resident, MiB")
-      ->check(CLI::Range(8.0, 65536.0));
+      ->check(within(8.0, 65536.0));
   cmd->add_option("--error-budget", args->error_budget,
                   "Let the governor choose each frame's technique: the cheapest whose predicted "
                   "error is within PCT percent (a technique the script names wins)");
