@@ -8,20 +8,10 @@
 # Exit 77 (skipped) without Xvfb, xdotool or a python with matplotlib.
 set -uo pipefail
 planet="$1"; work="$2"
-for tool in Xvfb xdotool; do
-  if ! command -v "$tool" >/dev/null 2>&1; then
-    echo "SKIPPED: $tool is not installed (scripts/install-deps.sh installs it)"
-    exit 77
-  fi
-done
 source "$(dirname "$0")/matplotlib_python.sh"  # $python, or skipped
 rm -rf "$work"; mkdir -p "$work"
-display=":$(( 90 + RANDOM % 400 ))"
-Xvfb "$display" -screen 0 800x600x24 -nolisten tcp >/dev/null 2>&1 &
-xvfb=$!
+source "$(dirname "$0")/virtual_display.sh"  # $xvfb and DISPLAY, or skipped
 trap 'kill "$xvfb" 2>/dev/null' EXIT
-export DISPLAY="$display"
-for _ in $(seq 1 50); do xdotool getmouselocation >/dev/null 2>&1 && break; sleep 0.1; done
 fail() { echo "FAIL: $1"; cat "$out" "$out.err"; exit 1; }
 
 # Flies with the options given, presses each key and waits for its line.

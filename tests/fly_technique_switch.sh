@@ -9,20 +9,10 @@
 # without Xvfb or xdotool.
 set -uo pipefail
 planet="$1"; work="$2"
-for tool in Xvfb xdotool; do
-  if ! command -v "$tool" >/dev/null 2>&1; then
-    echo "SKIPPED: $tool is not installed (scripts/install-deps.sh installs it)"
-    exit 77
-  fi
-done
 rm -rf "$work"; mkdir -p "$work"
-display=":$(( 90 + RANDOM % 400 ))"
-Xvfb "$display" -screen 0 800x600x24 -nolisten tcp >/dev/null 2>&1 &
-xvfb=$!
+source "$(dirname "$0")/virtual_display.sh"  # $xvfb and DISPLAY, or skipped
 fly=""
 trap 'kill "$xvfb" 2>/dev/null; [ -n "$fly" ] && kill "$fly" 2>/dev/null' EXIT
-export DISPLAY="$display"
-for _ in $(seq 1 50); do xdotool getmouselocation >/dev/null 2>&1 && break; sleep 0.1; done
 
 # fly_start RUN: a window at a tenth of its size, with its own empty cache.
 fly_start() {
