@@ -13,7 +13,7 @@ fail() { echo "FAIL: $*"; failed=1; }
 render() {  # render OUT [--max-order N]
   local out="$1"; shift
   "$planet" reference --scene earth_noon --width 8 --height 4 --spp 512 --out "$work/$out.exr" \
-    --quiet "$@" > "$work/$out.txt" 2>&1 || fail "reference $* failed: $(cat "$work/$out.txt")"
+    "$@" > "$work/$out.txt" 2>&1 || fail "reference $* failed: $(cat "$work/$out.txt")"
 }
 render all
 render first --max-order 1

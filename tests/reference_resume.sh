@@ -9,7 +9,7 @@ failed=0
 fail() { echo "FAIL: $*"; failed=1; }
 render() {  # render CACHE SPP
   PLANET_CACHE_DIR="$work/$1" "$planet" reference --scene earth_sunset --width 4 --height 2 \
-    --spp "$2" --out "$work/$1/out.exr" --quiet
+    --spp "$2" --out "$work/$1/out.exr"
 }
 render a 3000,600,3000 > "$work/small.txt" || fail "the small render failed"
 render a 20000,600,20000 > "$work/on.txt" || fail "the render that goes on failed"
