@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The examples of the README and of the book run as written: every
 # `build/planet ...` line of the code blocks of README.md and docs/**/*.md
-# that names no placeholder (FILE, DIR, [options]), but the window (fly),
+# that names no word to fill in (FILE, DIR, [options]), but the window (fly),
 # the long benchmarks and the lab's whole sweeps, runs from a scratch
 # folder with the shipped data, exits 0 within two minutes and prints
 # something. A line that more than one page gives runs once, in the order

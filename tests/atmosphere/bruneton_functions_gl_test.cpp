@@ -3,7 +3,7 @@
 // the GPU (llvmpipe compute, float): the tables' parameterisations agree to
 // what float arithmetic allows. The functions that read a table are left to
 // the technique's image tests (bruneton_gl_test.cpp): on the CPU their
-// texture() is a stub that throws.
+// texture() throws, since no table is sampled there.
 #include "atmosphere/gpu/atmosphere_block.h"
 #include "atmosphere/math/shared_math.h"
 #include "gl/context.h"
