@@ -83,6 +83,60 @@ double read_height(JsonObject& o, const Body& body, const Geodetic& place,
   return height;
 }
 
+// A keyframe's position: geodetic, recorded in the body frame, or where the
+// previous keyframe's orbit has carried the camera.
+void read_position(JsonObject& k, const FlightScript& s, const Geodesy& geodesy,
+                   const GroundHeight& ground, double min_height, bool orbit_before, Keyframe& f) {
+  if (orbit_before) {
+    for (const char* key :
+         {"lat_deg", "lon_deg", "height_m", "height_above_ground_m", "position_body_m"}) {
+      if (k.has(key)) k.fail(key, "the position comes from the orbit of the keyframe before");
+    }
+    const Keyframe& prev = s.keyframes.back();
+    f.pos_body = body_state(s.body, prev.orbit->state_at(f.utc), f.utc).pos;
+    f.place = geodesy.geodetic_from_body(f.pos_body);
+  } else if (k.has("position_body_m")) {
+    auto p = k.numbers("position_body_m", 3, -1e13, 1e13);
+    f.pos_body = {p[0], p[1], p[2]};
+    f.place = geodesy.geodetic_from_body(f.pos_body);
+    if (f.place.height < min_height) k.fail("position_body_m", "is deep inside the body");
+  } else {
+    f.place.lat = glm::radians(k.number("lat_deg", -90.0, 90.0));
+    f.place.lon = glm::radians(k.number("lon_deg", -180.0, 180.0));
+    f.place.height =
+        read_height(k, s.body, f.place, ground, min_height, std::nullopt, &f.height_above_ground);
+    f.pos_body = geodesy.body_from_geodetic(f.place);
+  }
+}
+
+// A keyframe's attitude: a recorded quaternion, a target, or heading,
+// pitch and roll.
+void read_attitude(JsonObject& k, const FlightScript& s, const Geodesy& geodesy,
+                   const GroundHeight& ground, double min_height, Keyframe& f) {
+  if (k.has("body_from_camera_wxyz")) {
+    auto q = k.numbers("body_from_camera_wxyz", 4, -1.0, 1.0);
+    f.body_from_camera = glm::dquat(q[0], q[1], q[2], q[3]);
+    if (std::abs(glm::length(f.body_from_camera) - 1.0) > 1e-6) {
+      k.fail("body_from_camera_wxyz", "is not a unit quaternion");
+    }
+  } else if (k.has("look_at")) {
+    JsonObject t = k.object("look_at");
+    Geodetic target{glm::radians(t.number("lat_deg", -90.0, 90.0)),
+                    glm::radians(t.number("lon_deg", -180.0, 180.0)), 0.0};
+    target.height = read_height(t, s.body, target, ground, min_height, 0.0, nullptr);
+    t.finish();
+    glm::dvec3 target_body = geodesy.body_from_geodetic(target);
+    if (glm::length(target_body - f.pos_body) < 1e-3) k.fail("look_at", "is where the camera is");
+    f.body_from_camera = look_at(geodesy, f.pos_body, target_body);
+  } else {
+    f.heading = glm::radians(k.number_or("heading_deg", 0.0, -360.0, 360.0));
+    f.pitch = glm::radians(k.number_or("pitch_deg", 0.0, -90.0, 90.0));
+    f.roll = glm::radians(k.number_or("roll_deg", 0.0, -180.0, 180.0));
+    f.body_from_camera = glm::normalize(body_from_enu_at(geodesy, f.place) *
+                                        enu_from_camera(f.heading, f.pitch, f.roll));
+  }
+}
+
 }  // namespace
 
 FlightScript load_flight_script(const std::filesystem::path& file, const GroundHeight& ground) {
@@ -135,7 +189,8 @@ FlightScript load_flight_script(const std::filesystem::path& file, const GroundH
     }
     double pct = root.number("error_budget_pct", -1e9, 1e9);
     if (!(pct > 0 && pct <= 1000)) {
-      root.fail("error_budget_pct", fmt::format("{} is not a percentage above 0 and at most 1000", pct));
+      root.fail("error_budget_pct",
+                fmt::format("{} is not a percentage above 0 and at most 1000", pct));
     }
     s.error_budget_percent = pct;
   }
@@ -182,28 +237,7 @@ FlightScript load_flight_script(const std::filesystem::path& file, const GroundH
     } else {
       f.utc = i == 0 ? s.start_utc : s.keyframes.back().utc + (f.time - s.keyframes.back().time);
     }
-    // Position: geodetic, recorded body-frame, or where the previous
-    // keyframe's orbit has carried the camera.
-    if (orbit_before) {
-      for (const char* key :
-           {"lat_deg", "lon_deg", "height_m", "height_above_ground_m", "position_body_m"}) {
-        if (k.has(key)) k.fail(key, "the position comes from the orbit of the keyframe before");
-      }
-      const Keyframe& prev = s.keyframes.back();
-      f.pos_body = body_state(s.body, prev.orbit->state_at(f.utc), f.utc).pos;
-      f.place = geodesy.geodetic_from_body(f.pos_body);
-    } else if (k.has("position_body_m")) {
-      auto p = k.numbers("position_body_m", 3, -1e13, 1e13);
-      f.pos_body = {p[0], p[1], p[2]};
-      f.place = geodesy.geodetic_from_body(f.pos_body);
-      if (f.place.height < min_height) k.fail("position_body_m", "is deep inside the body");
-    } else {
-      f.place.lat = glm::radians(k.number("lat_deg", -90.0, 90.0));
-      f.place.lon = glm::radians(k.number("lon_deg", -180.0, 180.0));
-      f.place.height =
-          read_height(k, s.body, f.place, ground, min_height, std::nullopt, &f.height_above_ground);
-      f.pos_body = geodesy.body_from_geodetic(f.place);
-    }
+    read_position(k, s, geodesy, ground, min_height, orbit_before, f);
     orbit_before = false;
     if (k.has("orbit")) {
       if (i + 1 == keys.size()) k.fail("orbit", "needs a keyframe after it where the orbit ends");
@@ -223,29 +257,7 @@ FlightScript load_flight_script(const std::filesystem::path& file, const GroundH
       }
       orbit_before = true;
     }
-    // Attitude: a recorded quaternion, a target, or heading/pitch/roll.
-    if (k.has("body_from_camera_wxyz")) {
-      auto q = k.numbers("body_from_camera_wxyz", 4, -1.0, 1.0);
-      f.body_from_camera = glm::dquat(q[0], q[1], q[2], q[3]);
-      if (std::abs(glm::length(f.body_from_camera) - 1.0) > 1e-6) {
-        k.fail("body_from_camera_wxyz", "is not a unit quaternion");
-      }
-    } else if (k.has("look_at")) {
-      JsonObject t = k.object("look_at");
-      Geodetic target{glm::radians(t.number("lat_deg", -90.0, 90.0)),
-                      glm::radians(t.number("lon_deg", -180.0, 180.0)), 0.0};
-      target.height = read_height(t, s.body, target, ground, min_height, 0.0, nullptr);
-      t.finish();
-      glm::dvec3 target_body = geodesy.body_from_geodetic(target);
-      if (glm::length(target_body - f.pos_body) < 1e-3) k.fail("look_at", "is where the camera is");
-      f.body_from_camera = look_at(geodesy, f.pos_body, target_body);
-    } else {
-      f.heading = glm::radians(k.number_or("heading_deg", 0.0, -360.0, 360.0));
-      f.pitch = glm::radians(k.number_or("pitch_deg", 0.0, -90.0, 90.0));
-      f.roll = glm::radians(k.number_or("roll_deg", 0.0, -180.0, 180.0));
-      f.body_from_camera = glm::normalize(body_from_enu_at(geodesy, f.place) *
-                                          enu_from_camera(f.heading, f.pitch, f.roll));
-    }
+    read_attitude(k, s, geodesy, ground, min_height, f);
     if (s.auto_exposure && k.has("exposure")) {
       k.fail("exposure", "given where the script's exposure is \"auto\"");
     }
