@@ -10,8 +10,8 @@ void PassTally::add(const std::vector<PassTiming>& frame) {
   ++frames_;
   for (const PassTiming& p : frame) {
     Pass& pass = passes_[p.pass];
-    if (p.reused) {
-      ++pass.reused;
+    if (p.reused || p.skipped) {
+      ++(p.reused ? pass.reused : pass.skipped);
       continue;
     }
     ++pass.ran;
@@ -40,6 +40,7 @@ std::string PassTally::summary() const {
     out += fmt::format("  {:<{}}  {:8.2f} ms  ran {} of {}", r.name, width, r.mean_ms, r.pass->ran,
                        frames_);
     if (r.pass->reused > 0) out += fmt::format(", reused {}", r.pass->reused);
+    if (r.pass->skipped > 0) out += fmt::format(", skipped {}", r.pass->skipped);
     out += "\n";
   }
   return out;

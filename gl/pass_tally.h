@@ -13,7 +13,7 @@ namespace planet {
 class PassTally {
  public:
   struct Pass {
-    int ran = 0, reused = 0;
+    int ran = 0, reused = 0, skipped = 0;
     double gpu_ms = 0;   // summed over the frames it ran
     double wall_ms = 0;  // the same, where the timer was synchronous
   };
@@ -22,7 +22,7 @@ class PassTally {
   int frames() const { return frames_; }
   const std::map<std::string, Pass>& passes() const { return passes_; }
   // One line a pass, the costliest first: "  sky  12.34 ms  ran 40 of 50,
-  // reused 10". The mean is over the frames the pass ran: its wall time
+  // reused 10, skipped 2". The mean is over the frames the pass ran: its wall time
   // where the timer was synchronous, else its timer queries' GPU time.
   std::string summary() const;
 

@@ -9,7 +9,7 @@ namespace planet {
 
 GpuTimer::~GpuTimer() {
   for (auto& p : pending_) {
-    if (!p.reused && !p.on_cpu) free_.push_back(p.query);
+    if (!p.reused && !p.on_cpu && !p.skipped) free_.push_back(p.query);
   }
   if (free_.empty()) return;
   glDeleteQueries(GLsizei(free_.size()), free_.data());
@@ -51,6 +51,12 @@ void GpuTimer::reuse(const std::string& pass) {
   pending_.push_back(p);
 }
 
+void GpuTimer::skip(const std::string& pass) {
+  Pending p{pass, 0, std::chrono::steady_clock::now()};
+  p.skipped = true;
+  pending_.push_back(p);
+}
+
 void GpuTimer::cpu(const std::string& pass, double ms) {
   Pending p{pass, 0, std::chrono::steady_clock::now()};
   p.on_cpu = true;
@@ -61,8 +67,11 @@ void GpuTimer::cpu(const std::string& pass, double ms) {
 std::vector<PassTiming> GpuTimer::collect() {
   std::vector<PassTiming> out;
   for (auto& p : pending_) {
-    if (p.reused) {
-      out.push_back({p.pass, 0.0, 0.0, true});
+    if (p.reused || p.skipped) {
+      PassTiming t{p.pass};
+      t.reused = p.reused;
+      t.skipped = p.skipped;
+      out.push_back(t);
       continue;
     }
     if (p.on_cpu) {

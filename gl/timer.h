@@ -2,6 +2,8 @@
 // GPU time per pass, from GL_TIME_ELAPSED queries. Results are read once a
 // frame is finished, which waits for the GPU: fine for capture and
 // benchmarks, where the numbers are the point.
+#include "gl/pass_graph.h"
+
 #include <epoxy/gl.h>
 
 #include <chrono>
@@ -23,9 +25,13 @@ struct PassTiming {
   bool reused = false;
   // The pass ran on the CPU: gpu_ms and wall_ms hold its wall time.
   bool on_cpu = false;
+  // The frame did not need the pass: it did not run, and nothing of it
+  // was shown.
+  bool skipped = false;
+  bool ran() const { return !reused && !skipped; }
 };
 
-class GpuTimer {
+class GpuTimer final : public PassRecorder {
  public:
   GpuTimer() = default;
   ~GpuTimer();
@@ -37,11 +43,14 @@ class GpuTimer {
   // benchmarks: the waits take from the frame what overlap would give.
   void set_synchronous(bool synchronous) { synchronous_ = synchronous; }
   // Queries do not nest: end one pass before beginning the next.
-  void begin(const std::string& pass);
-  void end();
+  void begin(const std::string& pass) override;
+  void end() override;
   // Records a pass that did not run this frame because its last result
   // still held: it is listed, at 0 ms, with `reused` set.
-  void reuse(const std::string& pass);
+  void reuse(const std::string& pass) override;
+  // Records a pass the frame did not need: listed, at 0 ms, with `skipped`
+  // set.
+  void skip(const std::string& pass) override;
   // Records a pass that ran on the CPU, taking `ms` of wall time.
   void cpu(const std::string& pass, double ms);
   // Waits for every pending query and returns the frame's passes in order,
@@ -56,6 +65,7 @@ class GpuTimer {
     double wall_ms = 0;
     bool reused = false;  // no query: the pass did not run
     bool on_cpu = false;  // no query: wall_ms is its time
+    bool skipped = false;  // no query: the frame did not need it
   };
   bool synchronous_ = false;
   std::vector<GLuint> free_;

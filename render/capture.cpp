@@ -55,6 +55,7 @@ nlohmann::json sidecar(const FlightScript& script, const FlightPath& path, const
   nlohmann::json passes = nlohmann::json::object();
   nlohmann::json reused = nlohmann::json::array();
   for (const auto& p : stats.passes) {
+    if (p.skipped) continue;
     if (p.reused) {
       reused.push_back(p.pass);
     } else {

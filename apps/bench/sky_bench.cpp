@@ -87,7 +87,7 @@ Timed time_frames(FrameRenderer& renderer, const Camera& camera, const glm::dvec
     double total = 0, wall = 0, frame_wall = 0;
     for (const PassTiming& p : renderer.render(camera, sun, 10.0).passes) {
       frame_wall += p.wall_ms;
-      if (!is_atmosphere_pass(p.pass)) continue;
+      if (p.skipped || !is_atmosphere_pass(p.pass)) continue;
       passes[p.pass].push_back(p.gpu_ms);
       pass_walls[p.pass].push_back(p.wall_ms);
       total += p.gpu_ms;

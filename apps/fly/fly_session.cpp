@@ -382,6 +382,7 @@ HudView FlySession::hud_view(const Camera& cam, const glm::dvec3& sun, double re
   v.pitch_deg = glm::degrees(look.pitch);
   v.frame_ms = real_dt * 1e3;
   for (const auto& p : stats_.passes) {
+    if (p.skipped) continue;
     v.passes += p.reused ? fmt::format("{:<24} reused\n", p.pass)
                          : fmt::format("{:<24} {:.2f} ms\n", p.pass, p.gpu_ms);
     (p.reused ? v.passes_reused : v.passes_ran) += 1;

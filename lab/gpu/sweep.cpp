@@ -91,7 +91,7 @@ void time_cell(const Scene& scene, const std::string& choice, int frames, SweepC
   for (int i = 0; i < frames; ++i) {
     double wall = 0, gpu = 0;
     for (const PassTiming& p : renderer.render(scene.camera, scene.sun_dir_body, scene.exposure).passes) {
-      if (p.pass == "surface" || p.pass == "tonemap") continue;
+      if (p.skipped || p.pass == "surface" || p.pass == "tonemap") continue;
       wall += p.wall_ms;
       gpu += p.gpu_ms;
       passes[p.pass].push_back(p.wall_ms);

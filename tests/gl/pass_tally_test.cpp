@@ -34,6 +34,17 @@ TEST(PassTallyTest, WallTimeWhereTheTimerWasSynchronous) {
   EXPECT_EQ(tally.summary(), "  sky     90.00 ms  ran 2 of 2\n");
 }
 
+TEST(PassTallyTest, CountsTheFramesThatSkippedAPass) {
+  PassTiming skipped{"aerial_perspective"};
+  skipped.skipped = true;
+  PassTally tally;
+  tally.add({ran("aerial_perspective", 6.0), ran("sky", 10.0)});
+  tally.add({skipped, ran("sky", 10.0)});
+  EXPECT_EQ(tally.summary(),
+            "  sky" + std::string(20, ' ') + "10.00 ms  ran 2 of 2\n"
+            "  aerial_perspective      6.00 ms  ran 1 of 2, skipped 1\n");
+}
+
 TEST(PassTallyTest, NoFramesNoLines) { EXPECT_EQ(PassTally().summary(), ""); }
 
 }  // namespace

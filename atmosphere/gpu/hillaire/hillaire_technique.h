@@ -14,7 +14,7 @@
 // the first also carries the glow of sunlight that the air scatters
 // forward along the sun's path, past the table's degree (a
 // forward-gain LUT). See hillaire_functions.glsl for why.
-#include "atmosphere/gpu/pass_inputs.h"
+#include "gl/pass_inputs.h"
 #include "atmosphere/gpu/technique.h"
 #include "gl/depth_probe.h"
 #include "gl/fullscreen_pass.h"
