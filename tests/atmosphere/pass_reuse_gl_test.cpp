@@ -11,6 +11,7 @@
 #include "terrain/ground.h"
 #include "terrain/terrain_config.h"
 
+#include "tests/atmosphere/image_difference.h"
 #include "tests/render/view_from_place.h"
 
 #include <gtest/gtest.h>
@@ -30,7 +31,7 @@ namespace PLANET_TEST_ID {
 std::set<std::string> ran(const FrameStats& stats) {
   std::set<std::string> out;
   for (const PassTiming& p : stats.passes) {
-    if (!p.reused) out.insert(p.pass);
+    if (p.ran()) out.insert(p.pass);
   }
   return out;
 }
@@ -43,49 +44,12 @@ std::set<std::string> reused(const FrameStats& stats) {
   return out;
 }
 
-// The largest difference of a value of a from b's, over the larger of the
-// two: 0 for the same bits, about 6e-8 for a float's last bit.
-//
 // What a pruned frame may differ by from the frame with nothing pruned: a
 // few of a float's last bits. The per-pixel path's own shader (compiled
 // without the LUT path and the terrain's shadow, which never reaches that
 // high) sums its march in another order of operations: 3.1e-7 at most
 // over the scenes and the climb below.
 constexpr double kSamePixels = 1e-6;
-double largest_relative_difference(const std::vector<float>& a, const std::vector<float>& b) {
-  if (a.size() != b.size()) return INFINITY;
-  double worst = 0.0;
-  for (size_t i = 0; i < b.size(); ++i) {
-    double scale = std::max(std::abs(double(a[i])), std::abs(double(b[i])));
-    if (scale > 0.0) worst = std::max(worst, std::abs(double(a[i]) - double(b[i])) / scale);
-  }
-  return worst;
-}
-
-// The largest over R, G and B of the RMSE of a against b over the mean of
-// b: the lab's relative RMSE, without its noise terms (neither is noisy).
-// `lit_only`: over the pixels with light in b alone, for a planet that
-// fills a few pixels of a black frame (the whole frame's would weigh its
-// differences by the frame's size over the planet's).
-double relative_rmse(const std::vector<float>& a, const std::vector<float>& b,
-                     bool lit_only = false) {
-  double worst = 0.0;
-  for (int c = 0; c < 3; ++c) {
-    double sum_sq = 0.0, sum = 0.0;
-    size_t n = 0;
-    for (size_t i = size_t(c); i < b.size(); i += 4) {
-      const size_t pixel = i - size_t(c);
-      if (lit_only && b[pixel] == 0.0f && b[pixel + 1] == 0.0f && b[pixel + 2] == 0.0f) continue;
-      double d = double(a[i]) - double(b[i]);
-      sum_sq += d * d;
-      sum += b[i];
-      ++n;
-    }
-    double mean = sum / double(n);
-    if (mean > 0.0) worst = std::max(worst, std::sqrt(sum_sq / double(n)) / mean);
-  }
-  return worst;
-}
 
 // The largest of the errors a test measured, and where.
 struct WorstError {
