@@ -222,6 +222,7 @@ void add_capture_command(CLI::App& app) {
   cmd->add_option("--technique", args->technique,
                   "Atmosphere technique name[:key=value,...], in place of the script's (wins "
                   "over --error-budget)");
+  add_schedule_option(*cmd);
   cmd->add_option("--width", args->width,
                   "Image width in pixels, in place of the script's (alone: the height keeps the "
                   "script's aspect)");

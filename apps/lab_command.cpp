@@ -372,6 +372,7 @@ void add_lab_command(CLI::App& app) {
       "(OUT/pareto_*.png, .svg) and OUT/report.html.");
   add_list_option(*run, "--techniques", args->options.techniques,
                   "Techniques (default: every one in `planet techniques`)");
+  add_schedule_option(*run);
   add_list_option(*run, "--quality", args->options.qualities,
                   "Quality points (default: each technique's every one, `planet techniques`)");
   add_list_option(*run, "--scenes", args->options.scenes,
@@ -419,6 +420,7 @@ void add_lab_command(CLI::App& app) {
       "OUT/report.html.");
   add_list_option(*stability, "--techniques", st->options.techniques,
                   "Techniques (default: every one in `planet techniques`)");
+  add_schedule_option(*stability);
   add_list_option(*stability, "--bodies", st->options.bodies,
                   fmt::format("Body presets (default: {})", fmt::join(stability_bodies(), ", ")));
   add_list_option(*stability, "--cells", st->options.cells, "Only these cells, by name (--list)");
