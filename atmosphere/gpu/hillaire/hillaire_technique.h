@@ -2,9 +2,10 @@
 // Hillaire 2020, "A Scalable and Production Ready Sky and Atmosphere
 // Rendering Technique": a transmittance LUT, a multiple-scattering LUT, a
 // sky-view LUT at the camera's altitude and aerial-perspective froxels,
-// each recomputed only when what it depends on changed (PassInputs: the
-// model for the first two, the altitude and the sun's elevation within a
-// stated step for the sky view, the exact view for the froxels), and a
+// each a pass of the frame's PassGraph, recomputed only when what it
+// depends on changed (its inputs: the model for the first two, the
+// altitude and the sun's elevation within a stated step for the sky view,
+// the exact view for the froxels), and a
 // per-pixel march with the same multiple-scattering LUT where the LUTs
 // cannot serve (high up and in space), or from outside the shell a
 // space-view LUT for the camera's distance and sun (space_view_lut.glsl)
@@ -13,7 +14,9 @@
 // takes the paper's Psi_ms = L_2 / (1 - f_ms) (technique "hillaire2020");
 // the first also carries the glow of sunlight that the air scatters
 // forward along the sun's path, past the table's degree (a
-// forward-gain LUT). See hillaire_functions.glsl for why.
+// forward-gain LUT). See hillaire_functions.glsl for why. The sky pass is
+// split for a software rasteriser or drawn whole for a GPU, by the schedule
+// (gl/schedule.h) the technique takes when built.
 #include "atmosphere/gpu/hillaire/hillaire_programs.h"
 #include "atmosphere/gpu/technique.h"
 #include "gl/depth_probe.h"
