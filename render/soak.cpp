@@ -119,10 +119,10 @@ SoakResult run_soak(const SoakOptions& o,
   r.tiles_budget_mib = double(o.terrain_cache_bytes) / double(1 << 20);
 
   FrameRenderer renderer(o.width, o.height);
-  TerrainOptions terrain;
-  terrain.cache_bytes = o.terrain_cache_bytes;
-  renderer.set_terrain_options(terrain);
-  renderer.set_terrain_wait(60.0);
+  FrameOptions frame_options;
+  frame_options.terrain.cache_bytes = o.terrain_cache_bytes;
+  frame_options.terrain_wait_s = 60.0;
+  renderer.set_options(frame_options);
 
   auto start = std::chrono::steady_clock::now();
   double warmup_peak = 0;
