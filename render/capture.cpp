@@ -262,18 +262,18 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
   StagingFolder staging(options.out_dir);
 
   FrameRenderer renderer(script.width, script.height);
-  renderer.set_antialiasing(script.antialiasing);
-  renderer.set_terrain_shadows(script.terrain_shadows);
-  renderer.set_stars(script.stars);
-  renderer.set_glare(script.glare);
-  renderer.set_auto_exposure(script.auto_exposure);
-  TerrainOptions terrain;
-  terrain.pixel_budget = options.pixel_budget;
-  terrain.cache_bytes = options.terrain_cache_bytes;
-  renderer.set_terrain_options(terrain);
+  FrameOptions frame_options;
+  frame_options.antialiasing = script.antialiasing;
+  frame_options.terrain_shadows = script.terrain_shadows;
+  frame_options.stars = script.stars;
+  frame_options.glare = script.glare;
+  frame_options.auto_exposure = script.auto_exposure;
+  frame_options.terrain.pixel_budget = options.pixel_budget;
+  frame_options.terrain.cache_bytes = options.terrain_cache_bytes;
   // A capture draws every tile the view needs at its level: frames must
   // not depend on how fast tiles happened to be built.
-  renderer.set_terrain_wait(kTerrainWaitSeconds);
+  frame_options.terrain_wait_s = kTerrainWaitSeconds;
+  renderer.set_options(frame_options);
   renderer.set_body(script.body, atmosphere, std::move(technique));
   FlightPath path(script);
   Geodesy geodesy(script.body.shape);

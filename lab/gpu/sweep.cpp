@@ -83,7 +83,9 @@ void time_cell(const Scene& scene, const std::string& choice, int frames, SweepC
   Body body = scene_body(scene);
   AtmosphereModel model = scene_atmosphere(scene, body);
   FrameRenderer renderer(scene.width, scene.height);
-  renderer.set_synchronous_timing(true);
+  FrameOptions options;
+  options.synchronous_timing = true;
+  renderer.set_options(options);
   renderer.set_body(body, model, make_technique(choice));
   renderer.render(scene.camera, scene.sun_dir_body, scene.exposure);  // warm-up
   std::vector<double> walls, gpus;

@@ -78,8 +78,11 @@ void expect_the_suns_disk_as_unpruned(const Body& body, const AtmosphereModel& m
                                       PlaceView view, glm::dvec2 pixel, int width, int height) {
   view.sun_dir_body = toward_pixel(view.camera, pixel, width, height);
   FrameRenderer pruned(width, height), unpruned(width, height);
-  for (FrameRenderer* r : {&pruned, &unpruned}) r->set_terrain_wait(120.0);
-  unpruned.set_view_pruning(false);
+  FrameOptions options;
+  options.terrain_wait_s = 120.0;
+  pruned.set_options(options);
+  options.view_pruning = false;
+  unpruned.set_options(options);
   pruned.set_body(body, model, make_technique("hillaire"));
   unpruned.set_body(body, model, make_technique("hillaire"));
   pruned.render(view.camera, view.sun_dir_body, 10.0);
@@ -226,7 +229,9 @@ TEST_F(PassReuseGLTest, NoAerialPerspectiveWithoutASurfaceInItsRangeAndTheSameIm
   auto up = view_from_place(body_.shape, {glm::radians(46.55), glm::radians(7.98), 4000.0}, 0.0,
                             60.0, 50.0, 10.0, 0.0);
   FrameRenderer pruned(64, 48), unpruned(64, 48);
-  unpruned.set_view_pruning(false);
+  FrameOptions options;
+  options.view_pruning = false;
+  unpruned.set_options(options);
   pruned.set_body(body_, model_, make_technique("hillaire"));
   unpruned.set_body(body_, model_, make_technique("hillaire"));
   FrameStats stats = pruned.render(up.camera, up.sun_dir_body, 10.0);
@@ -250,7 +255,9 @@ TEST_F(PassReuseGLTest, FromSpaceOnlyThePixelsInTheShellsBoundAreShadedAndTheIma
   const int width = 96, height = 64;
   view.sun_dir_body = toward_pixel(view.camera, {80.5, 50.5}, width, height);
   FrameRenderer pruned(width, height), unpruned(width, height);
-  unpruned.set_view_pruning(false);
+  FrameOptions options;
+  options.view_pruning = false;
+  unpruned.set_options(options);
   auto technique = std::make_unique<HillaireTechnique>();
   HillaireTechnique* hillaire = technique.get();
   pruned.set_body(body_, model_, std::move(technique));
@@ -301,7 +308,9 @@ TEST_F(PassReuseGLTest, PruningByViewChangesNoPixelOnTheCanonicalScenesOrAClimbT
   auto compare = [](const Body& body, const AtmosphereModel& model, int width, int height,
                     const Camera& camera, const glm::dvec3& sun, const std::string& where) {
     FrameRenderer pruned(width, height), unpruned(width, height);
-    unpruned.set_view_pruning(false);
+    FrameOptions options;
+    options.view_pruning = false;
+    unpruned.set_options(options);
     pruned.set_body(body, model, make_technique("hillaire"));
     unpruned.set_body(body, model, make_technique("hillaire"));
     FrameStats stats = pruned.render(camera, sun, 10.0);
