@@ -105,7 +105,9 @@ std::vector<float> draw(const Body& body, const AtmosphereModel& model, const Pl
                         const std::function<std::unique_ptr<AtmosphereTechnique>(Schedule)>& make,
                         Schedule schedule) {
   FrameRenderer renderer(96, 48);
-  renderer.set_terrain_wait(120.0);
+  FrameOptions options;
+  options.terrain_wait_s = 120.0;
+  renderer.set_options(options);
   renderer.set_body(body, model, make(schedule));
   renderer.render(view.camera, view.sun_dir_body, 10.0);
   std::vector<float> hdr = renderer.read_hdr();
