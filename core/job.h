@@ -1,0 +1,89 @@
+#pragma once
+// The engine of the long jobs (the lab's sweep, the stability map, the
+// governor's check, the measured skies): a plan of cells, each named by a
+// key that is the path of its result under the job's folder. A cell whose
+// result is there is kept, not run again (but with redo); each result is
+// written whole or not at all (atomic_file.h), so that a job killed
+// anywhere goes on where it stopped and ends with the bytes of a run that
+// never stopped; a share K/N of the job owns a part of the cells known from
+// K and N alone (share.h), so shares run in any order, anywhere, and again.
+// The shares' results put together are checked with require_one_job and
+// shares_by_index (share.h).
+#include "core/progress.h"
+#include "core/share.h"
+
+#include <filesystem>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace planet {
+
+struct JobCell {
+  std::string key;    // its result under the job's folder: "cells/earth_noon/raymarch-cheap.json"
+  std::string label;  // what progress names: "earth_noon raymarch:cheap"
+  // Cells of one group share what JobSteps::prepare makes for them (a
+  // scene's ground truth), and a share owns whole groups; empty: the cell
+  // is a group of its own.
+  std::string group;
+  size_t index = 0;  // the cell's place in its user's own plan (a scene and a point, say)
+};
+
+// How a share owns its part of a plan's groups: every N-th from K (groups
+// of unlike cost spread over the shares), or a contiguous run (share_range).
+enum class ShareSplit { kInterleaved, kContiguous };
+
+// Whether `share` owns item `index` of `total`.
+bool share_owns(const Share& share, ShareSplit split, int index, int total);
+
+struct JobOptions {
+  bool redo = false;  // every cell of the share run again, its result replaced
+  Share share;        // the part of the plan this run owns
+  ShareSplit split = ShareSplit::kInterleaved;
+};
+
+struct JobSteps {
+  // Before the first cell of a group that runs (none where all its cells
+  // are kept): what the group's cells share.
+  std::function<void(const JobCell&)> prepare;
+  // Runs the cell: its result, the bytes of its file.
+  std::function<std::string(const JobCell&)> run;
+  // A kept cell's result, read back; false where it is not whole, and the
+  // cell runs again. None: kept cells are not read.
+  std::function<bool(const JobCell&, const std::filesystem::path&)> keep;
+  // Before each cell: (cells done, cells in all, the cell's label); after
+  // the last, (all, all, "").
+  std::function<void(int, int, const std::string&)> progress;
+};
+
+class Job {
+ public:
+  // The plan's cells in order; the share's are kept. InputError naming the
+  // key for a key given twice.
+  Job(std::filesystem::path dir, const std::vector<JobCell>& plan, JobOptions options = {});
+
+  const std::filesystem::path& dir() const { return dir_; }
+  // This share's cells, in the plan's order.
+  const std::vector<JobCell>& cells() const { return cells_; }
+  std::filesystem::path file(const JobCell& cell) const { return dir_ / cell.key; }
+  // Whether the cell's result is there and kept (never with redo).
+  bool finished(const JobCell& cell) const;
+  // The cells of the share that will run.
+  int left() const;
+  // What the progress line's time left weighs each of the share's cells
+  // by (Progress::expect_parts): `priors` in the cells' order, with 0 for a
+  // cell kept from before.
+  std::vector<ProgressPart> parts(std::vector<ProgressPart> priors) const;
+
+  // Removes what a killed run left in the folders of the cells
+  // (remove_stale_partials), then runs the share's cells not finished,
+  // each result written whole, and reads the others back.
+  void run(const JobSteps& steps) const;
+
+ private:
+  std::filesystem::path dir_;
+  std::vector<JobCell> cells_;
+  JobOptions options_;
+};
+
+}  // namespace planet
