@@ -191,27 +191,28 @@ std::filesystem::path stability_script() {
 double estimate_stability_seconds(const StabilityOptions& o,
                                   const std::vector<StabilityCell>& cells, int& references,
                                   int& draws) {
-  auto points = stability_points(o.techniques);
+  const auto points = stability_points(o.techniques);
+  const Job job = stability_job(o, cells);
+  std::vector<int> left(cells.size(), 0);
   double seconds = 0;
   references = draws = 0;
-  for (const StabilityCell& cell : cells) {
-    int left = 0;
-    for (const auto& [technique, quality] : points) {
-      std::filesystem::path file = stability_result_file(o, cell.scene.name, technique, quality);
-      if (o.redo || !std::filesystem::exists(file)) {
-        ++left;
-        // Bruneton's default tables, made once per model: 19 s on average
-        // here; any other draw 0.05-0.8 s.
-        bool tables = technique == "bruneton" && quality == "default" &&
-                      cell.point.altitude_m == 2.0 && cell.point.sun_elevation_deg == 60.0;
-        seconds += tables ? 19.0 : 0.4;
-      }
-    }
-    draws += left;
-    PathBudget budget = stability_reference_budget(cell);
-    if (left > 0 && !reference_cached(cell.scene, budget, ReferenceMode::kRgb)) {
+  for (const JobCell& draw : job.cells()) {
+    if (job.finished(draw)) continue;
+    const StabilityCell& cell = cells[draw.index / points.size()];
+    const auto& [technique, quality] = points[draw.index % points.size()];
+    ++left[draw.index / points.size()];
+    // Bruneton's default tables, made once per model: 19 s on average
+    // here; any other draw 0.05-0.8 s.
+    bool tables = technique == "bruneton" && quality == "default" && cell.point.altitude_m == 2.0 &&
+                  cell.point.sun_elevation_deg == 60.0;
+    seconds += tables ? 19.0 : 0.4;
+    ++draws;
+  }
+  for (size_t i = 0; i < cells.size(); ++i) {
+    PathBudget budget = stability_reference_budget(cells[i]);
+    if (left[i] > 0 && !reference_cached(cells[i].scene, budget, ReferenceMode::kRgb)) {
       ++references;
-      seconds += stability_reference_seconds(cell);
+      seconds += stability_reference_seconds(cells[i]);
     }
   }
   return seconds;

@@ -2,6 +2,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/job.h"
 #include "core/tone_map.h"
 #include "core/version.h"
 #include "lab/accuracy.h"
@@ -241,7 +242,9 @@ std::vector<StabilityCell> shard_cells(const std::vector<StabilityCell>& cells, 
                                        int shards) {
   std::vector<StabilityCell> out;
   for (size_t i = 0; i < cells.size(); ++i) {
-    if (int(i % size_t(shards)) == shard - 1) out.push_back(cells[i]);
+    if (share_owns({shard - 1, shards}, ShareSplit::kInterleaved, int(i), int(cells.size()))) {
+      out.push_back(cells[i]);
+    }
   }
   return out;
 }
