@@ -5,6 +5,7 @@
 
 #include <fmt/format.h>
 
+#include <fstream>
 #include <map>
 #include <set>
 
@@ -80,6 +81,20 @@ void Job::run(const JobSteps& steps) const {
     write_file_atomically(result, bytes);
   }
   if (steps.progress) steps.progress(total, total, "");
+}
+
+InputError not_a_job_cell(const std::string& file, const std::string& job, const std::string& why) {
+  return InputError(
+      fmt::format("{}: not a cell of {} ({}); delete it or run with --redo", file, job, why));
+}
+
+nlohmann::json read_job_file(const std::filesystem::path& file, const std::string& job) {
+  std::ifstream in(file);
+  try {
+    return nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw not_a_job_cell(file.string(), job, e.what());
+  }
 }
 
 }  // namespace planet

@@ -9,8 +9,11 @@
 // K and N alone (share.h), so shares run in any order, anywhere, and again.
 // The shares' results put together are checked with require_one_job and
 // shares_by_index (share.h).
+#include "core/error.h"
 #include "core/progress.h"
 #include "core/share.h"
+
+#include <nlohmann/json.hpp>
 
 #include <filesystem>
 #include <functional>
@@ -85,5 +88,21 @@ class Job {
   std::vector<JobCell> cells_;
   JobOptions options_;
 };
+
+// A cell's result read back from JSON by `read`: a file that does not parse,
+// or a field `read` finds missing or of another type (a nlohmann::json
+// exception), is InputError "FILE: not a cell of JOB (WHY); delete it or
+// run with --redo".
+InputError not_a_job_cell(const std::string& file, const std::string& job, const std::string& why);
+template <class Read>
+auto read_job_json(const nlohmann::json& json, const std::string& file, const std::string& job,
+                   Read read) -> decltype(read(json)) {
+  try {
+    return read(json);
+  } catch (const nlohmann::json::exception& e) {
+    throw not_a_job_cell(file, job, e.what());
+  }
+}
+nlohmann::json read_job_file(const std::filesystem::path& file, const std::string& job);
 
 }  // namespace planet

@@ -288,8 +288,8 @@ nlohmann::json cell_to_json(const SweepCell& c) {
           {"time_ties", c.time_ties}};
 }
 
-SweepCell cell_from_json(const nlohmann::json& j, const std::string& file) {
-  try {
+SweepCell cell_from_json(const nlohmann::json& json, const std::string& file) {
+  return read_job_json(json, file, "planet lab run", [](const nlohmann::json& j) {
     SweepCell c;
     c.scene = j.at("scene").get<std::string>();
     c.technique = j.at("technique").get<std::string>();
@@ -312,24 +312,11 @@ SweepCell cell_from_json(const nlohmann::json& j, const std::string& file) {
       c.split = true;
     }
     return c;
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(fmt::format("{}: not a cell of planet lab run ({}); delete it or run with "
-                                 "--redo",
-                                 file, e.what()));
-  }
+  });
 }
 
 SweepCell read_sweep_cell(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  nlohmann::json j;
-  try {
-    in >> j;
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(fmt::format("{}: not a cell of planet lab run ({}); delete it or run "
-                                 "with --redo",
-                                 file.string(), e.what()));
-  }
-  return cell_from_json(j, file.string());
+  return cell_from_json(read_job_file(file, "planet lab run"), file.string());
 }
 
 std::vector<ProgressPart> sweep_cell_costs(const SweepOptions& o, const SweepPlan& plan) {

@@ -209,6 +209,23 @@ TEST(JobTest, AMergeNamesTheForeignShareTheOneGivenTwiceAndTheMissingOnes) {
   EXPECT_EQ(by_index[1]->share.index, 1);
 }
 
+TEST(JobTest, ACellThatDoesNotReadBackIsNamedWithTheWayOut) {
+  auto dir = fresh_dir("read");
+  std::filesystem::create_directories(dir);
+  std::ofstream(dir / "half.json") << "{ \"a\": ";
+  std::string half = refusal([&] { read_job_file(dir / "half.json", "planet lab run"); });
+  EXPECT_EQ(half.rfind((dir / "half.json").string() + ": not a cell of planet lab run (", 0), 0u)
+      << half;
+  EXPECT_NE(half.find("); delete it or run with --redo"), std::string::npos) << half;
+  auto read_a = [](const nlohmann::json& j) { return j.at("a").get<int>(); };
+  EXPECT_EQ(read_job_json(nlohmann::json{{"a", 3}}, "x.json", "planet lab stability", read_a), 3);
+  std::string wrong = refusal([&] {
+    read_job_json(nlohmann::json{{"a", "three"}}, "x.json", "planet lab stability", read_a);
+  });
+  EXPECT_EQ(wrong.rfind("x.json: not a cell of planet lab stability (", 0), 0u) << wrong;
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet
