@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <set>
@@ -81,6 +83,35 @@ void Job::run(const JobSteps& steps) const {
     write_file_atomically(result, bytes);
   }
   if (steps.progress) steps.progress(total, total, "");
+}
+
+JobProgress::JobProgress(std::string label, std::string unit, std::string done, bool quiet,
+                         std::filesystem::path kept_in, std::function<void()> on_stop)
+    : label_(std::move(label)),
+      unit_(std::move(unit)),
+      done_(std::move(done)),
+      quiet_(quiet),
+      kept_in_(std::move(kept_in)),
+      on_stop_(std::move(on_stop)) {}
+
+void JobProgress::update(int done, int total) {
+  if (!progress_) {
+    progress_.emplace(label_, total, unit_, quiet_);
+    if (!parts_.empty()) progress_->expect_parts(parts_);
+  }
+  progress_->update(done);
+  if (!interrupt_.interrupted()) return;
+  progress_->finish();
+  if (on_stop_) on_stop_();
+  std::fprintf(stderr,
+               "planet: interrupted: %d of %d %s are done and kept in %s; run the same command "
+               "again to go on\n",
+               done, total, done_.c_str(), kept_in_.string().c_str());
+  std::exit(kInterruptedExitStatus);
+}
+
+void JobProgress::finish() {
+  if (progress_) progress_->finish();
 }
 
 InputError not_a_job_cell(const std::string& file, const std::string& job, const std::string& why) {

@@ -10,6 +10,7 @@
 // The shares' results put together are checked with require_one_job and
 // shares_by_index (share.h).
 #include "core/error.h"
+#include "core/interrupt.h"
 #include "core/progress.h"
 #include "core/share.h"
 
@@ -17,6 +18,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -87,6 +89,36 @@ class Job {
   std::filesystem::path dir_;
   std::vector<JobCell> cells_;
   JobOptions options_;
+};
+
+// A job's progress line for the command that runs it (Progress: the rate
+// and the time left), and its Ctrl-C: while it lives SIGINT is held
+// (InterruptScope); at the next cell the line ends, `on_stop` runs (the
+// command keeps its output folder), "planet: interrupted: D of T <done>
+// are done and kept in <kept_in>; run the same command again to go on" is
+// said, and the program exits with kInterruptedExitStatus.
+class JobProgress {
+ public:
+  JobProgress(std::string label, std::string unit, std::string done, bool quiet,
+              std::filesystem::path kept_in, std::function<void()> on_stop = {});
+  // What the time left weighs each cell by (Job::parts), before any update.
+  void expect_parts(std::vector<ProgressPart> parts) { parts_ = std::move(parts); }
+  // JobSteps::progress: the line made at the first update, with its total.
+  void update(int done, int total);
+  std::function<void(int, int, const std::string&)> steps() {
+    return [this](int done, int total, const std::string&) { update(done, total); };
+  }
+  bool interrupted() const { return interrupt_.interrupted(); }
+  void finish();
+
+ private:
+  std::string label_, unit_, done_;
+  bool quiet_;
+  std::filesystem::path kept_in_;
+  std::function<void()> on_stop_;
+  std::vector<ProgressPart> parts_;
+  InterruptScope interrupt_;
+  std::optional<Progress> progress_;
 };
 
 // A cell's result read back from JSON by `read`: a file that does not parse,

@@ -11,6 +11,9 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <csignal>
+#include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <set>
 #include <string>
@@ -224,6 +227,26 @@ TEST(JobTest, ACellThatDoesNotReadBackIsNamedWithTheWayOut) {
   });
   EXPECT_EQ(wrong.rfind("x.json: not a cell of planet lab stability (", 0), 0u) << wrong;
   std::filesystem::remove_all(dir);
+}
+
+// Ctrl-C while a job runs: at the next cell its command keeps what is done
+// and says so, and the program ends as a shell reports SIGINT.
+TEST(JobTest, CtrlCBetweenCellsKeepsWhatIsDoneAndSaysHowToGoOn) {
+  // The exit runs the program's static destructors: in a fork of this
+  // process, whose worker threads are not there, they would wait forever.
+  GTEST_FLAG_SET(death_test_style, "threadsafe");
+  EXPECT_EXIT(
+      {
+        JobProgress progress("job", "cell", "cells", /*quiet=*/true, "out/cells",
+                             [] { std::fprintf(stderr, "folder kept\n"); });
+        progress.update(0, 4);
+        std::raise(SIGINT);
+        progress.update(1, 4);
+        std::exit(0);
+      },
+      ::testing::ExitedWithCode(kInterruptedExitStatus),
+      "folder kept\nplanet: interrupted: 1 of 4 cells are done and kept in out/cells; run the "
+      "same command again to go on");
 }
 
 }  // namespace PLANET_TEST_ID
