@@ -44,6 +44,18 @@ std::vector<std::filesystem::path> share_entries(
 void require_every_share(const std::vector<bool>& present, const std::string& what,
                          const std::vector<std::filesystem::path>& inputs);
 
+// Every share that `inputs` name, in their order: an input's entries (the
+// input itself, or the shares in a folder: share_entries) each `read`.
+template <class T, class Entries, class Read>
+std::vector<T> read_shares(const std::vector<std::filesystem::path>& inputs, Entries entries,
+                           Read read) {
+  std::vector<T> shares;
+  for (const std::filesystem::path& input : inputs) {
+    for (const std::filesystem::path& entry : entries(input)) shares.push_back(read(entry));
+  }
+  return shares;
+}
+
 // One share as a merge reads it: where it is, which it is, and what the
 // shares of one job agree on, as (name, value) in the same order for each.
 struct ShareOf {

@@ -50,12 +50,7 @@ std::vector<std::pair<std::string, std::string>> program_fields(const ReferenceS
 
 MergedReference merge_reference_shares(const std::vector<std::filesystem::path>& inputs) {
   if (inputs.empty()) throw InputError("--merge: name the folders (or files) of the shares");
-  std::vector<ReferenceShareFile> shares;
-  for (const std::filesystem::path& input : inputs) {
-    for (const std::filesystem::path& file : share_files(input)) {
-      shares.push_back(read_reference_share(file));
-    }
-  }
+  const auto shares = read_shares<ReferenceShareFile>(inputs, share_files, read_reference_share);
   // One render: every share agrees with the most of them ...
   std::vector<ShareOf> of;
   for (const ReferenceShareFile& s : shares)

@@ -117,12 +117,7 @@ void copy_atomically(const std::filesystem::path& from, const std::filesystem::p
 MergedCapture merge_capture_shares(const std::vector<std::filesystem::path>& inputs,
                                    const std::filesystem::path& out) {
   if (inputs.empty()) throw InputError("--merge: name the folders of the shares");
-  std::vector<CaptureShare> shares;
-  for (const std::filesystem::path& input : inputs) {
-    for (const std::filesystem::path& dir : share_dirs(input)) {
-      shares.push_back(read_capture_share(dir));
-    }
-  }
+  const auto shares = read_shares<CaptureShare>(inputs, share_dirs, read_capture_share);
   // One capture: every share agrees with the most of them, and was made by
   // this program.
   std::vector<ShareOf> of;
