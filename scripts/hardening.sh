@@ -7,8 +7,8 @@
 #   asan-long [K/N]  share K of N (K from 0) of the long tier under the same
 #                build: the long tier's tests sorted by name, every N-th from
 #                the K-th. Without K/N, share K of PLANET_ASAN_LONG_SHARES (2),
-#                K the commit (git rev-parse HEAD) modulo N, so that every
-#                share runs within N commits; a share that failed runs
+#                K the commit's number (git rev-list --count HEAD) modulo N,
+#                so that N commits in a row run every share; a share that failed runs
 #                again by hand with the K/N it printed;
 #                PLANET_ASAN_LONG_LIST=1 lists the share's tests, runs none
 #   asan         the whole suite under the same build (by hand: it does not
@@ -47,9 +47,11 @@ while [ $# -gt 0 ]; do
         share="$1"
         shift
       else
-        head="$(git rev-parse HEAD 2> /dev/null)" ||
+        # The commit's number in its history: N commits in a row run every
+        # share.
+        count="$(git rev-list --count HEAD 2> /dev/null)" ||
           { echo "hardening.sh: asan-long without K/N needs a git checkout (its commit picks K)" >&2; exit 2; }
-        share="$(( 16#${head:0:7} % shares ))/$shares"
+        share="$(( count % shares ))/$shares"
       fi
       if ! [[ "$share" =~ ^([0-9]+)/([0-9]+)$ ]] || [ "${BASH_REMATCH[1]}" -ge "${BASH_REMATCH[2]}" ]; then
         echo "hardening.sh: asan-long takes K/N with 0 <= K < N, not '$share'" >&2
