@@ -101,7 +101,13 @@ long_share_pattern() {  # K N
 }
 
 export ASAN_OPTIONS="detect_leaks=1:check_initialization_order=1:detect_stack_use_after_return=1:abort_on_error=0"
-export LSAN_OPTIONS="suppressions=$supp/lsan.supp:print_suppressions=0"
+# Read from a copy outside the source tree: a test puts the tree out of
+# reach (installed_program_runs_outside_the_source_tree), and ASan stops a
+# program whose suppressions it cannot read.
+lsan_supp="$(mktemp)"
+trap 'rm -f "$lsan_supp"' EXIT
+cp "$supp/lsan.supp" "$lsan_supp"
+export LSAN_OPTIONS="suppressions=$lsan_supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 
 for step in "${steps[@]}"; do
