@@ -143,7 +143,7 @@ for step in "${steps[@]}"; do
       build_asan
       echo "hardening: $step (again by hand: scripts/hardening.sh asan-long $share)"
       names="$(long_share_pattern "${share%/*}" "${share#*/}")"
-      asan_ctest --no-tests=error -L long -R "$names"
+      (cd "$asan_dir" && ctest --output-on-failure -j"$jobs" --no-tests=error -L long -R "$names")
       ;;
     fuzz)
       targets=()
