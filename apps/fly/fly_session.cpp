@@ -459,6 +459,8 @@ void FlySession::apply(const HudChanges& c) {
     lod_pixels_ = *c.lod_pixels;
     if (renderer_->terrain()) renderer_->terrain()->set_pixel_budget(double(lod_pixels_));
   }
+  // Most frames change no box: the renderer's options are set only when one does.
+  if (!c.terrain_shadows && !c.stars && !c.glare && !c.auto_exposure) return;
   FrameOptions options = renderer_->options();
   if (c.terrain_shadows) options.terrain_shadows = *c.terrain_shadows;
   if (c.stars) options.stars = *c.stars;
