@@ -3,13 +3,14 @@
 # `build/planet ...` line of the code blocks of README.md and docs/**/*.md
 # that names no word to fill in (FILE, DIR, [options]), but the window (fly),
 # the long benchmarks and the lab's whole sweeps, runs from a scratch
-# folder with the shipped data, exits 0 within two minutes and prints
-# something. A line that more than one page gives runs once, in the order
+# folder with the shipped data, exits 0 within two minutes (under the
+# sanitizers, PLANET_EXAMPLE_SECONDS: ten) and prints something. A line that more than one page gives runs once, in the order
 # of README.md and then the book's pages by name, all in the one folder
 # (so that a page's shares can be merged by its next line). And the README
 # names the test command CI runs (.ci/run), as its front door promises.
 set -uo pipefail
 planet="$1"; source="$2"
+seconds="${PLANET_EXAMPLE_SECONDS:-120}"
 work="$(mktemp -d /tmp/planet-readme.XXXXXX)"
 trap 'rm -rf "$work"' EXIT
 export XDG_CACHE_HOME="$work/cache"  # a reference rendered here stays here
@@ -26,7 +27,7 @@ while IFS= read -r line; do
   if echo "$line" | grep -qE '\[|\b(FILE|DIR|NAME|DEG|UTC|MIB|PX|M)\b'; then continue; fi
   command="${line//build\/planet/$planet}"
   command="${command//PLANET_CACHE_DIR=data/PLANET_CACHE_DIR=$source/data}"
-  ( cd "$work" && timeout 120 bash -c "$command" ) > "$work/out.txt" 2> "$work/err.txt"
+  ( cd "$work" && timeout "$seconds" bash -c "$command" ) > "$work/out.txt" 2> "$work/err.txt"
   rc=$?
   ran=$((ran + 1))
   if [ "$rc" -ne 0 ] || [ ! -s "$work/out.txt" ]; then
