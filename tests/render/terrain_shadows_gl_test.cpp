@@ -143,7 +143,8 @@ TEST(TerrainShadowsGLTest, TheAirInTheShadowOfTheRidgesLosesTheSunsLight) {
 
 TEST(TerrainShadowsGLTest, TheAirOfAMarsHollowBelowTheDatumIsShadedToo) {
   auto context = GlContext::create_headless();
-  Body mars = load_body(data_dir() / "planets" / "mars.json");
+  // The procedural Mars, whose hollow this scene was found in.
+  Body mars = load_body(project_root() / "tests/data/planets/mars_procedural.json");
   // terrain_mars's frame 1: 3 km over ground 750 m below the datum (the
   // atmosphere's bottom sphere), facing a sun 10 deg up. Every shadow of
   // this relief lies below the datum (the highest at -452 m), so before
