@@ -74,4 +74,17 @@ expect "earth_noon-4x2-64spp-rgb-0123456789abcdef.sums: not the sums of a refere
   env PLANET_CACHE_DIR="$work/cache" "$planet" reference --scene earth_noon --width 4 --height 2 \
   --spp 96 --out "$work/r.exr" --quiet
 [ -e "$work/r.exr" ] && { echo "FAIL: a reference was written from broken sums"; failed=1; }
+# A body's elevation grid: truncated, or another body's (its datum), is one
+# line naming the file before any frame.
+planets="$(dirname "$flights")/planets"
+head -c 2000000 "$(dirname "$flights")/elevation/mars/megt90n000cb.img" > "$work/short.img"
+sed "s|data/elevation/mars/megt90n000cb.img|$work/short.img|" "$planets/mars.json" > "$work/mars_short.json"
+expect "short.img: 2000000 bytes, but a grid of 1440 x 720 16-bit samples is 2073600 bytes (truncated?)" \
+  "$planet" probe ground --planet "$work/mars_short.json" --lat 0 --lon 0
+sed 's|"radius_m": 3396000.0|"radius_m": 1737400.0|' "$planets/mars.json" > "$work/mars_moon_datum.json"
+expect "mars_moon_datum.json: terrain.height.datum.radius_m: " \
+  "$planet" probe ground --planet "$work/mars_moon_datum.json" --lat 0 --lon 0
+sed "s|\"body\": \"mars\"|\"body\": \"$work/mars_short.json\"|" "$flights/mars_sunset.json" > "$work/short_flight.json"
+expect "short.img: 2000000 bytes" "$planet" capture --flight "$work/short_flight.json" --out "$work/g"
+[ -e "$work/g" ] && { echo "FAIL: a capture over a truncated grid left its folder"; failed=1; }
 exit $failed
