@@ -126,6 +126,7 @@ void add_accuracy_command(CLI::App& app) {
       "accuracy", "Measure an atmosphere technique against the path-traced ground truth");
   cmd->add_option("--technique", args->technique, "Atmosphere technique, NAME[:KEY=VALUE,...]")
       ->capture_default_str();
+  add_schedule_option(*cmd);
   add_list_option(*cmd, "--scene", args->scenes,
                   "Canonical scenes (default: all with an atmosphere)");
   cmd->add_option("--spp", args->paths,

@@ -127,13 +127,12 @@ void run(const CaptureArgs& args) {
   options.pixel_budget = args.pixel_budget;
   options.terrain_cache_bytes = size_t(args.terrain_cache_mib * 1048576.0);
   // Every input, and the output folder, before GL starts.
-  check_frames(script, options);
-  if (script.body.has_atmosphere()) script_technique(script);
   if (!std::isnan(args.error_budget)) {
     options.error_budget_percent = checked_error_budget(args.error_budget, "--error-budget");
   }
   options.error_model_file = args.error_model;
-  std::optional<double> budget = capture_error_budget(script, options);
+  const CapturePlan plan = plan_capture(script, options);
+  const std::optional<double> budget = plan.budget;
   if (options.error_budget_percent && args.technique && !args.quiet) {
     std::fprintf(stderr, "planet: --technique %s wins over --error-budget: the governor is off\n",
                  args.technique->c_str());
@@ -142,10 +141,6 @@ void run(const CaptureArgs& args) {
                  "planet: %s names its technique (%s), which wins over --error-budget: the "
                  "governor is off\n",
                  script.file.string().c_str(), script.technique.c_str());
-  }
-  if (budget) {
-    load_error_model(options.error_model_file.empty() ? shipped_error_model_file()
-                                                      : options.error_model_file);
   }
   check_keyframes_above_ground(script, ground);
   OutputFolder out(options.out_dir, "--out");
@@ -166,10 +161,13 @@ void run(const CaptureArgs& args) {
   }
   CaptureResult result;
   try {
-    result = run_capture(script, options);
+    result = run_capture(script, options, plan);
   } catch (const CaptureInterrupted& e) {
     out.keep();  // its complete frames
     std::fprintf(stderr, "planet: %s\n", e.what());
+    // std::exit unwinds no stack: the context goes first, or the driver's
+    // memory for it is left behind (LeakSanitizer's report).
+    context.reset();
     std::exit(130);  // as a shell reports a program stopped by SIGINT
   }
   out.keep();
@@ -180,8 +178,7 @@ void run(const CaptureArgs& args) {
               result.last_png.filename().string().c_str());
   // Frames earlier runs left (the run this one resumes, the slices before):
   // capture.json describes them all.
-  const int end = options.end_frame < 0 ? script.frame_count() : options.end_frame;
-  if (result.folder.first != options.first_frame || result.folder.end != end) {
+  if (result.folder.first != plan.first || result.folder.end != plan.end) {
     std::printf("%s holds frames %d to %d of %d, whole (%.1f s of capture, the runs' together)\n",
                 options.out_dir.string().c_str(), result.folder.first, result.folder.end - 1,
                 script.frame_count(), result.folder.wall_seconds);
@@ -222,6 +219,7 @@ void add_capture_command(CLI::App& app) {
   cmd->add_option("--technique", args->technique,
                   "Atmosphere technique name[:key=value,...], in place of the script's (wins "
                   "over --error-budget)");
+  add_schedule_option(*cmd);
   cmd->add_option("--width", args->width,
                   "Image width in pixels, in place of the script's (alone: the height keeps the "
                   "script's aspect)");

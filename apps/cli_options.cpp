@@ -1,6 +1,7 @@
 #include "apps/cli_options.h"
 
 #include "core/error.h"
+#include "gl/schedule.h"
 #include "sim/body.h"
 
 namespace planet::apps {
@@ -25,6 +26,17 @@ std::vector<std::string> split_list(const std::vector<std::string>& words) {
     }
   }
   return items;
+}
+
+void add_schedule_option(CLI::App& command) {
+  command
+      .add_option_function<std::string>(
+          "--schedule",
+          [](const std::string& text) { set_schedule(parse_schedule(text, "--schedule")); },
+          "How the atmosphere splits its passes: software (for llvmpipe and the like), plain "
+          "(for a GPU) or auto (by the GL renderer)")
+      ->type_name("software|plain|auto")
+      ->default_str("auto");
 }
 
 CLI::Validator positive() {

@@ -81,6 +81,11 @@ double checked_longitude_deg(double lon_deg, const std::string& option);
 // it reads against maps of either kind; `decimals` places.
 std::string longitude_text(double lon_deg, int decimals);
 
+// --schedule software|plain|auto: how the techniques the command builds
+// split their passes (gl/schedule.h); auto, the default, goes by the GL
+// renderer. A bad value: one line naming it, exit 2, before any work.
+void add_schedule_option(CLI::App& command);
+
 // "Body name or file (asteroid, earth, ...)", the names from data/planets.
 std::string body_option_help(const std::string& what = "Body name or file");
 

@@ -10,6 +10,7 @@
 #include "core/data_paths.h"
 #include "core/error.h"
 #include "core/interrupt.h"
+#include "core/job.h"
 #include "core/paths.h"
 #include "core/progress.h"
 #include "core/version.h"
@@ -118,32 +119,21 @@ void run_lab(LabArgs& args) {
     model_folder->keep();
   }
   auto context = GlContext::create_headless();
-  InterruptScope interrupt;
+  JobProgress progress("lab run", "cell", "cells", args.quiet, o.out / "cells",
+                       [&] { folder.keep(); });
   ensure_references(plan, args);
   const int total = int(plan.scenes.size() * plan.points.size());
   std::printf("lab: %zu scenes x %zu (technique, quality) points = %d cells into %s\n",
               plan.scenes.size(), plan.points.size(), total, o.out.string().c_str());
   keep_sweep_tables(plan);
   std::fflush(stdout);
-  Progress progress("lab run", total, "cell", args.quiet);
   progress.expect_parts(sweep_cell_costs(o, plan));  // the time left by the cells' costs
-  std::vector<SweepCell> cells = run_sweep(o, plan, [&](int done, int, const std::string&) {
-    progress.update(done);
-    if (interrupt.interrupted()) {
-      progress.finish();
-      folder.keep();
-      std::fprintf(stderr,
-                   "planet: interrupted: %d of %d cells are done and kept in %s; run the same "
-                   "command again to go on\n",
-                   done, total, (o.out / "cells").string().c_str());
-      std::exit(kInterruptedExitStatus);
-    }
-  });
+  std::vector<SweepCell> cells = run_sweep(o, plan, progress.steps());
   progress.finish();
   // The governor's table: the cells, and what a model change costs each choice.
   auto changes = model_change_times(o, plan, [&](const std::string& choice) {
     if (!args.quiet) std::fprintf(stderr, "lab: timing a model change of %s\n", choice.c_str());
-    if (interrupt.interrupted()) {
+    if (progress.interrupted()) {
       folder.keep();
       std::fprintf(stderr, "planet: interrupted: the cells are kept in %s; run the same command "
                            "again to go on\n", o.out.string().c_str());
@@ -191,27 +181,28 @@ std::filesystem::path stability_script() {
 double estimate_stability_seconds(const StabilityOptions& o,
                                   const std::vector<StabilityCell>& cells, int& references,
                                   int& draws) {
-  auto points = stability_points(o.techniques);
+  const auto points = stability_points(o.techniques);
+  const Job job = stability_job(o, cells);
+  std::vector<int> left(cells.size(), 0);
   double seconds = 0;
   references = draws = 0;
-  for (const StabilityCell& cell : cells) {
-    int left = 0;
-    for (const auto& [technique, quality] : points) {
-      std::filesystem::path file = stability_result_file(o, cell.scene.name, technique, quality);
-      if (o.redo || !std::filesystem::exists(file)) {
-        ++left;
-        // Bruneton's default tables, made once per model: 19 s on average
-        // here; any other draw 0.05-0.8 s.
-        bool tables = technique == "bruneton" && quality == "default" &&
-                      cell.point.altitude_m == 2.0 && cell.point.sun_elevation_deg == 60.0;
-        seconds += tables ? 19.0 : 0.4;
-      }
-    }
-    draws += left;
-    PathBudget budget = stability_reference_budget(cell);
-    if (left > 0 && !reference_cached(cell.scene, budget, ReferenceMode::kRgb)) {
+  for (const JobCell& draw : job.cells()) {
+    if (job.finished(draw)) continue;
+    const StabilityCell& cell = cells[draw.index / points.size()];
+    const auto& [technique, quality] = points[draw.index % points.size()];
+    ++left[draw.index / points.size()];
+    // Bruneton's default tables, made once per model: 19 s on average
+    // here; any other draw 0.05-0.8 s.
+    bool tables = technique == "bruneton" && quality == "default" && cell.point.altitude_m == 2.0 &&
+                  cell.point.sun_elevation_deg == 60.0;
+    seconds += tables ? 19.0 : 0.4;
+    ++draws;
+  }
+  for (size_t i = 0; i < cells.size(); ++i) {
+    PathBudget budget = stability_reference_budget(cells[i]);
+    if (left[i] > 0 && !reference_cached(cells[i].scene, budget, ReferenceMode::kRgb)) {
       ++references;
-      seconds += stability_reference_seconds(cell);
+      seconds += stability_reference_seconds(cells[i]);
     }
   }
   return seconds;
@@ -251,22 +242,9 @@ void run_stability_command(StabilityArgs& args) {
               references, draws, seconds / 60.0);
   std::fflush(stdout);
   auto context = GlContext::create_headless();
-  InterruptScope interrupt;
-  const int total = int(cells.size() * stability_points(o.techniques).size());
-  Progress progress("lab stability", total, "draw", args.quiet);
-  std::vector<StabilityResult> results =
-      run_stability(o, cells, [&](int done, int, const std::string&) {
-        progress.update(done);
-        if (interrupt.interrupted()) {
-          progress.finish();
-          folder.keep();
-          std::fprintf(stderr,
-                       "planet: interrupted: %d of %d draws are done and kept in %s; run the "
-                       "same command again to go on\n",
-                       done, total, (o.out / "cells").string().c_str());
-          std::exit(kInterruptedExitStatus);
-        }
-      });
+  JobProgress progress("lab stability", "draw", "draws", args.quiet, o.out / "cells",
+                       [&] { folder.keep(); });
+  std::vector<StabilityResult> results = run_stability(o, cells, progress.steps());
   progress.finish();
   folder.keep();
   std::map<std::string, int> counts;
@@ -321,22 +299,10 @@ void run_governor_command(GovernorArgs& args) {
     std::fflush(stdout);
   }
   auto context = GlContext::create_headless();
-  InterruptScope interrupt;
-  std::optional<Progress> progress;
-  auto checks = run_governor_check(o, [&](int done, int total, const std::string&) {
-    if (!progress) progress.emplace("lab governor", total, "view", args.quiet);
-    progress->update(done);
-    if (interrupt.interrupted()) {
-      progress->finish();
-      folder.keep();
-      std::fprintf(stderr,
-                   "planet: interrupted: %d of %d checks are done and kept in %s; run the same "
-                   "command again to go on\n",
-                   done, total, (o.out / "views").string().c_str());
-      std::exit(kInterruptedExitStatus);
-    }
-  });
-  if (progress) progress->finish();
+  JobProgress progress("lab governor", "view", "checks", args.quiet, o.out / "views",
+                       [&] { folder.keep(); });
+  auto checks = run_governor_check(o, progress.steps());
+  progress.finish();
   folder.keep();
   std::string summary = write_governor_check(o, checks);
   std::printf("%swrote %s and %s\n", summary.c_str(), (o.out / "governor.json").string().c_str(),
@@ -372,6 +338,7 @@ void add_lab_command(CLI::App& app) {
       "(OUT/pareto_*.png, .svg) and OUT/report.html.");
   add_list_option(*run, "--techniques", args->options.techniques,
                   "Techniques (default: every one in `planet techniques`)");
+  add_schedule_option(*run);
   add_list_option(*run, "--quality", args->options.qualities,
                   "Quality points (default: each technique's every one, `planet techniques`)");
   add_list_option(*run, "--scenes", args->options.scenes,
@@ -419,6 +386,7 @@ void add_lab_command(CLI::App& app) {
       "OUT/report.html.");
   add_list_option(*stability, "--techniques", st->options.techniques,
                   "Techniques (default: every one in `planet techniques`)");
+  add_schedule_option(*stability);
   add_list_option(*stability, "--bodies", st->options.bodies,
                   fmt::format("Body presets (default: {})", fmt::join(stability_bodies(), ", ")));
   add_list_option(*stability, "--cells", st->options.cells, "Only these cells, by name (--list)");

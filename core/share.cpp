@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <map>
 
 namespace planet {
 
@@ -68,6 +69,49 @@ void require_every_share(const std::vector<bool>& present, const std::string& wh
   throw InputError(fmt::format(
       "share{} {} of {} {} missing from{} ({} of {} found)", missing_count > 1 ? "s" : "", missing,
       what, missing_count > 1 ? "are" : "is", where, count - missing_count, count));
+}
+
+void require_one_job(const std::vector<ShareOf>& shares) {
+  if (shares.empty()) return;
+  for (size_t f = 0; f < shares.front().fields.size(); ++f) {
+    std::map<std::string, int> votes;
+    std::string best;
+    for (const ShareOf& s : shares) {
+      const std::string& value = s.fields[f].second;
+      if (++votes[value] > votes[best] || best.empty()) best = value;
+    }
+    for (const ShareOf& s : shares) {
+      if (s.fields[f].second != best) {
+        throw InputError(fmt::format("{}: share {} is of {} {}, the other shares of {}",
+                                     s.where.string(), s.share.label(), s.fields[f].first,
+                                     s.fields[f].second, best));
+      }
+    }
+  }
+}
+
+std::vector<const ShareOf*> shares_by_index(const std::vector<ShareOf>& shares,
+                                            const std::string& what,
+                                            const std::vector<std::filesystem::path>& inputs) {
+  if (shares.empty()) return {};
+  const int count = shares.front().share.count;
+  std::vector<const ShareOf*> by_index(size_t(count), nullptr);
+  for (const ShareOf& s : shares) {
+    if (s.share.count != count) {
+      throw InputError(fmt::format("{}: share {} is of share count {}, the other shares of {}",
+                                   s.where.string(), s.share.label(), s.share.count, count));
+    }
+    const ShareOf*& slot = by_index[size_t(s.share.index)];
+    if (slot) {
+      throw InputError(fmt::format("share {} is given twice: {} and {}", s.share.label(),
+                                   slot->where.string(), s.where.string()));
+    }
+    slot = &s;
+  }
+  std::vector<bool> present(size_t(count), false);
+  for (int k = 0; k < count; ++k) present[size_t(k)] = by_index[size_t(k)] != nullptr;
+  require_every_share(present, what, inputs);
+  return by_index;
 }
 
 }  // namespace planet

@@ -44,4 +44,36 @@ std::vector<std::filesystem::path> share_entries(
 void require_every_share(const std::vector<bool>& present, const std::string& what,
                          const std::vector<std::filesystem::path>& inputs);
 
+// Every share that `inputs` name, in their order: an input's entries (the
+// input itself, or the shares in a folder: share_entries) each `read`.
+template <class T, class Entries, class Read>
+std::vector<T> read_shares(const std::vector<std::filesystem::path>& inputs, Entries entries,
+                           Read read) {
+  std::vector<T> shares;
+  for (const std::filesystem::path& input : inputs) {
+    for (const std::filesystem::path& entry : entries(input)) shares.push_back(read(entry));
+  }
+  return shares;
+}
+
+// One share as a merge reads it: where it is, which it is, and what the
+// shares of one job agree on, as (name, value) in the same order for each.
+struct ShareOf {
+  std::filesystem::path where;
+  Share share;
+  std::vector<std::pair<std::string, std::string>> fields;
+};
+
+// InputError "WHERE: share K/N is of NAME VALUE, the other shares of
+// VALUE" for the first share that differs from what most of them hold: the
+// odd one out is named, not the others.
+void require_one_job(const std::vector<ShareOf>& shares);
+
+// The shares in index order, 0 to N-1 of the count the first holds (agreed
+// by require_one_job): InputError "share K/N is given twice: A and B", or
+// require_every_share's for those not there.
+std::vector<const ShareOf*> shares_by_index(const std::vector<ShareOf>& shares,
+                                            const std::string& what,
+                                            const std::vector<std::filesystem::path>& inputs);
+
 }  // namespace planet

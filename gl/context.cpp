@@ -1,6 +1,7 @@
 #include "gl/context.h"
 
 #include "core/error.h"
+#include "gl/debug_output.h"
 #include "gl/driver_watch.h"
 
 // epoxy before GLFW: GLFW would pull in the Khronos GL header first.
@@ -11,6 +12,7 @@
 #include <fmt/format.h>
 #include <fmt/ranges.h>
 
+#include <atomic>
 #include <cstdlib>
 #include <mutex>
 
@@ -28,13 +30,28 @@ const char* kInstallHint =
 
 std::mutex g_errors_mutex;
 std::vector<std::string> g_errors;
+std::atomic<GlErrorHandler> g_error_handler{nullptr};
+// The debug groups open on this thread, outermost first, as the driver's
+// own messages on each push and pop tell them (debug output is synchronous:
+// its messages come on the thread of the call).
+thread_local std::vector<std::string> t_groups;
 
 void GLAPIENTRY on_debug_message(GLenum, GLenum type, GLuint, GLenum severity, GLsizei,
                                  const GLchar* message, const void*) {
-  if (type == GL_DEBUG_TYPE_ERROR || severity == GL_DEBUG_SEVERITY_HIGH) {
-    std::lock_guard lock(g_errors_mutex);
-    if (g_errors.size() < 16) g_errors.emplace_back(message);
+  if (type == GL_DEBUG_TYPE_PUSH_GROUP) {
+    t_groups.emplace_back(message);
+    return;
   }
+  if (type == GL_DEBUG_TYPE_POP_GROUP) {
+    if (!t_groups.empty()) t_groups.pop_back();
+    return;
+  }
+  if (type != GL_DEBUG_TYPE_ERROR && severity != GL_DEBUG_SEVERITY_HIGH) return;
+  std::string report = message;
+  if (!t_groups.empty()) report += fmt::format(" in pass {}", fmt::join(t_groups, " / "));
+  if (GlErrorHandler handler = g_error_handler.load()) handler(report);
+  std::lock_guard lock(g_errors_mutex);
+  if (g_errors.size() < 16) g_errors.push_back(std::move(report));
 }
 
 // While it lives, this thread flushes denormal floats to zero, as GPUs do
@@ -189,14 +206,21 @@ void GlContext::check_version_and_enable_debug(bool debug) {
     throw SystemError(fmt::format("OpenGL {}.{} found, 4.5 core needed ({}); {}", version / 10,
                                   version % 10, renderer(), kInstallHint));
   }
+  t_groups.clear();  // a new context has no group open
   if (debug) {
     glEnable(GL_DEBUG_OUTPUT);
     glEnable(GL_DEBUG_OUTPUT_SYNCHRONOUS);
     glDebugMessageCallback(on_debug_message, nullptr);
+    // The groups' own messages name the pass of an error that follows.
+    for (GLenum type : {GL_DEBUG_TYPE_PUSH_GROUP, GL_DEBUG_TYPE_POP_GROUP}) {
+      glDebugMessageControl(GL_DONT_CARE, type, GL_DONT_CARE, 0, nullptr, GL_TRUE);
+    }
   }
   // Reversed-Z: depth 1 at the near plane, 0 at infinity.
   glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
 }
+
+void set_gl_error_handler(GlErrorHandler handler) { g_error_handler = handler; }
 
 void check_gl_errors(const char* where) {
   std::vector<std::string> errors;

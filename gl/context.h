@@ -12,7 +12,8 @@ namespace planet {
 
 struct ContextOptions {
   // GL debug output: errors reported by the driver become exceptions at the
-  // next check_gl_errors(). On in debug builds and tests; elsewhere set
+  // next check_gl_errors(), and test failures in the test programs
+  // (gl/debug_output.h). On in debug builds and tests; elsewhere set
   // PLANET_GL_DEBUG=1 to turn it on.
   bool debug = default_debug();
   static bool default_debug();

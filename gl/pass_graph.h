@@ -36,16 +36,18 @@ class PassRecorder {
   virtual void skip(const std::string& pass) = 0;
 };
 
+// Declared with designated initializers, naming only what it has:
+// {.name = "sky", .reads = {"sky_view_lut"}, .run = ...}.
 struct Pass {
   std::string name;
   // The passes whose results this one reads: run (or reused) before it.
   // A name not among the frame's passes is an error (std::logic_error).
-  std::vector<std::string> reads;
+  std::vector<std::string> reads = {};
   // Empty: the frame always needs it.
-  std::function<bool()> needed;
+  std::function<bool()> needed = {};
   // Empty: it has no result to keep, and runs whenever it is needed.
-  std::function<PassKey()> inputs;
-  std::function<void()> run;
+  std::function<PassKey()> inputs = {};
+  std::function<void()> run = {};
   // The pass times itself (it runs passes of its own, as the atmosphere's
   // technique does within the frame): the graph neither begins nor ends a
   // timing around it. Timer queries do not nest.

@@ -8,6 +8,7 @@
 namespace planet {
 
 GpuTimer::~GpuTimer() {
+  if (group_open_) glPopDebugGroup();
   for (auto& p : pending_) {
     if (!p.reused && !p.on_cpu && !p.skipped) free_.push_back(p.query);
   }
@@ -30,11 +31,20 @@ void GpuTimer::begin(const std::string& pass) {
     glFinish();
   }
   pending_.push_back({pass, q, std::chrono::steady_clock::now()});
+  // A pass that threw left its group open: it closes here, so that the
+  // groups never pile up past the GL's limit (64).
+  if (group_open_) glPopDebugGroup();
+  // A debug group per pass: a GL error reported within it names the pass
+  // (gl/debug_output.h), and GL debuggers show the frame's passes by name.
+  glPushDebugGroup(GL_DEBUG_SOURCE_APPLICATION, 0, -1, pass.c_str());
+  group_open_ = true;
   glBeginQuery(GL_TIME_ELAPSED, q);
 }
 
 void GpuTimer::end() {
   glEndQuery(GL_TIME_ELAPSED);
+  if (group_open_) glPopDebugGroup();
+  group_open_ = false;
   if (!synchronous_) return;
   {
     DriverWait wait("finishing a timed pass");

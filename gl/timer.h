@@ -68,6 +68,7 @@ class GpuTimer final : public PassRecorder {
     bool skipped = false;  // no query: the frame did not need it
   };
   bool synchronous_ = false;
+  bool group_open_ = false;  // the pass's debug group, between begin() and end()
   std::vector<GLuint> free_;
   std::vector<Pending> pending_;
 };

@@ -114,34 +114,31 @@ SkySpectra ground_truth_spectra(const AtmosphereModel& model, const MeasuredView
   return out;
 }
 
-SkySpectra cached_ground_truth_spectra(const AtmosphereModel& model, const MeasuredView& view,
-                                       const MeasuredCapture& capture, int paths,
-                                       const std::filesystem::path& cache_dir,
-                                       const std::function<void(int)>& on_progress) {
+GroundTruthCell ground_truth_cell(const AtmosphereModel& model, const MeasuredView& view,
+                                  const MeasuredCapture& capture, int paths) {
   std::string key = spectra_key(model, view, paths);
-  std::filesystem::path file =
-      cache_dir / fmt::format("{}_{}-{}paths-{}.json", capture.date,
-                              capture.local.substr(0, 2) + capture.local.substr(3, 2), paths, key);
-  if (std::filesystem::exists(file)) {
-    std::ifstream in(file);
-    nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-    if (!j.is_discarded() && j.value("key", "") == key) {
-      SkySpectra s;
-      s.radiance = j.at("radiance").get<std::vector<std::vector<double>>>();
-      s.std_error = j.at("std_error").get<std::vector<std::vector<double>>>();
-      if (on_progress) on_progress(int(s.radiance.size()));
-      return s;
-    }
-  }
-  SkySpectra s = ground_truth_spectra(model, view, paths, on_progress);
-  std::filesystem::create_directories(cache_dir);
-  nlohmann::json j = {{"key", key},
-                      {"capture", capture.date + " " + capture.local},
-                      {"paths", paths},
-                      {"wavelengths_nm", model.spectrum->wavelengths_nm},
-                      {"radiance", s.radiance},
-                      {"std_error", s.std_error}};
-  write_file_atomically(file, j.dump());
+  return {fmt::format("{}_{}-{}paths-{}.json", capture.date,
+                      capture.local.substr(0, 2) + capture.local.substr(3, 2), paths, key),
+          key};
+}
+
+std::string ground_truth_json(const GroundTruthCell& cell, const MeasuredCapture& capture,
+                              int paths, const std::vector<double>& wavelengths_nm,
+                              const SkySpectra& s) {
+  nlohmann::json j = {{"key", cell.key},        {"capture", capture.date + " " + capture.local},
+                      {"paths", paths},         {"wavelengths_nm", wavelengths_nm},
+                      {"radiance", s.radiance}, {"std_error", s.std_error}};
+  return j.dump();
+}
+
+std::optional<SkySpectra> read_ground_truth(const std::filesystem::path& file,
+                                            const std::string& key) {
+  std::ifstream in(file);
+  nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (j.is_discarded() || j.value("key", "") != key) return std::nullopt;
+  SkySpectra s;
+  s.radiance = j.at("radiance").get<std::vector<std::vector<double>>>();
+  s.std_error = j.at("std_error").get<std::vector<std::vector<double>>>();
   return s;
 }
 

@@ -17,6 +17,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -75,12 +76,22 @@ MeasuredView measured_view(const MeasuredCapture& capture, const std::string& bo
 SkySpectra ground_truth_spectra(const AtmosphereModel& model, const MeasuredView& view, int paths,
                                 const std::function<void(int)>& on_progress = {});
 
-// The same, kept in `cache_dir` under a key of (model, view, paths), so that
-// a lab run that stops goes on from the captures it finished.
-SkySpectra cached_ground_truth_spectra(const AtmosphereModel& model, const MeasuredView& view,
-                                       const MeasuredCapture& capture, int paths,
-                                       const std::filesystem::path& cache_dir,
-                                       const std::function<void(int)>& on_progress = {});
+// A capture's ground truth as a cell of a job (core/job.h): its file's
+// name, "<date>_<HHMM>-<paths>paths-<key>.json", under a key of (model,
+// view, paths), so that a lab run that stops goes on from the captures it
+// finished, and a changed model or view is traced again.
+struct GroundTruthCell {
+  std::string file, key;
+};
+GroundTruthCell ground_truth_cell(const AtmosphereModel& model, const MeasuredView& view,
+                                  const MeasuredCapture& capture, int paths);
+// The cell's bytes, and the spectra read back from them (none where the
+// file is not whole or is of another key).
+std::string ground_truth_json(const GroundTruthCell& cell, const MeasuredCapture& capture,
+                              int paths, const std::vector<double>& wavelengths_nm,
+                              const SkySpectra& spectra);
+std::optional<SkySpectra> read_ground_truth(const std::filesystem::path& file,
+                                            const std::string& key);
 
 // `sun_elevation_deg` and `sun_azimuth_deg` place the sun among the
 // capture's directions.

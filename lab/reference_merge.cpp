@@ -7,7 +7,6 @@
 #include <fmt/format.h>
 
 #include <algorithm>
-#include <map>
 #include <utility>
 
 namespace planet {
@@ -47,45 +46,16 @@ std::vector<std::pair<std::string, std::string>> program_fields(const ReferenceS
           {"view (camera, sun)", id.view}};
 }
 
-// The value most shares hold, for each shared field: the odd one out is
-// the share named, not the others.
-std::vector<std::string> majority(const std::vector<ReferenceShareFile>& shares) {
-  std::vector<std::string> out;
-  size_t fields = shared_fields(shares.front().id).size();
-  for (size_t f = 0; f < fields; ++f) {
-    std::map<std::string, int> votes;
-    std::string best;
-    for (const ReferenceShareFile& s : shares) {
-      std::string value = shared_fields(s.id)[f].second;
-      if (++votes[value] > votes[best] || best.empty()) best = value;
-    }
-    out.push_back(best);
-  }
-  return out;
-}
-
 }  // namespace
 
 MergedReference merge_reference_shares(const std::vector<std::filesystem::path>& inputs) {
   if (inputs.empty()) throw InputError("--merge: name the folders (or files) of the shares");
-  std::vector<ReferenceShareFile> shares;
-  for (const std::filesystem::path& input : inputs) {
-    for (const std::filesystem::path& file : share_files(input)) {
-      shares.push_back(read_reference_share(file));
-    }
-  }
+  const auto shares = read_shares<ReferenceShareFile>(inputs, share_files, read_reference_share);
   // One render: every share agrees with the most of them ...
-  std::vector<std::string> expected = majority(shares);
-  for (const ReferenceShareFile& s : shares) {
-    auto fields = shared_fields(s.id);
-    for (size_t f = 0; f < fields.size(); ++f) {
-      if (fields[f].second != expected[f]) {
-        throw InputError(fmt::format("{}: share {} is of {} {}, the other shares of {}",
-                                     s.file.string(), s.id.share.label(), fields[f].first,
-                                     fields[f].second, expected[f]));
-      }
-    }
-  }
+  std::vector<ShareOf> of;
+  for (const ReferenceShareFile& s : shares)
+    of.push_back({s.file, s.id.share, shared_fields(s.id)});
+  require_one_job(of);
   // ... and is what this program renders for that scene.
   MergedReference merged;
   const ReferenceShareId& first = shares.front().id;
@@ -110,18 +80,10 @@ MergedReference merge_reference_shares(const std::vector<std::filesystem::path>&
   }
   // Shares 0 to N-1, each once and finished.
   const int count = first.share.count;
-  std::vector<const ReferenceShareFile*> by_index(size_t(count), nullptr);
-  for (const ReferenceShareFile& s : shares) {
-    const ReferenceShareFile*& slot = by_index[size_t(s.id.share.index)];
-    if (slot) {
-      throw InputError(fmt::format("share {} is given twice: {} and {}", s.id.share.label(),
-                                   slot->file.string(), s.file.string()));
-    }
-    slot = &s;
+  std::vector<const ReferenceShareFile*> by_index;
+  for (const ShareOf* s : shares_by_index(of, first.scene, inputs)) {
+    by_index.push_back(&shares[size_t(s - of.data())]);
   }
-  std::vector<bool> present(static_cast<size_t>(count), false);
-  for (int k = 0; k < count; ++k) present[size_t(k)] = by_index[size_t(k)] != nullptr;
-  require_every_share(present, first.scene, inputs);
   Medium medium =
       make_medium(scene_atmosphere(merged.scene, scene_body(merged.scene)), merged.mode);
   const std::vector<int> lane_paths = merged.paths.lane_paths(medium.channels.size());

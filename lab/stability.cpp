@@ -2,6 +2,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/job.h"
 #include "core/tone_map.h"
 #include "core/version.h"
 #include "lab/accuracy.h"
@@ -241,7 +242,9 @@ std::vector<StabilityCell> shard_cells(const std::vector<StabilityCell>& cells, 
                                        int shards) {
   std::vector<StabilityCell> out;
   for (size_t i = 0; i < cells.size(); ++i) {
-    if (int(i % size_t(shards)) == shard - 1) out.push_back(cells[i]);
+    if (share_owns({shard - 1, shards}, ShareSplit::kInterleaved, int(i), int(cells.size()))) {
+      out.push_back(cells[i]);
+    }
   }
   return out;
 }
@@ -415,8 +418,8 @@ nlohmann::json result_to_json(const StabilityResult& r) {
           {"reference_noise", r.reference_noise}};
 }
 
-StabilityResult result_from_json(const nlohmann::json& j, const std::string& file) {
-  try {
+StabilityResult result_from_json(const nlohmann::json& json, const std::string& file) {
+  return read_job_json(json, file, "planet lab stability", [&](const nlohmann::json& j) {
     StabilityResult r;
     r.cell = j.at("cell").get<std::string>();
     r.body = j.at("body").get<std::string>();
@@ -434,24 +437,11 @@ StabilityResult result_from_json(const nlohmann::json& j, const std::string& fil
     r.render_s = j.at("render_s").get<double>();
     r.reference_noise = j.at("reference_noise").get<double>();
     return r;
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(fmt::format("{}: not a cell of planet lab stability ({}); delete it or run "
-                                 "with --redo",
-                                 file, e.what()));
-  }
+  });
 }
 
 StabilityResult read_stability_result(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  nlohmann::json j;
-  try {
-    in >> j;
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(fmt::format("{}: not a cell of planet lab stability ({}); delete it or run "
-                                 "with --redo",
-                                 file.string(), e.what()));
-  }
-  return result_from_json(j, file.string());
+  return result_from_json(read_job_file(file, "planet lab stability"), file.string());
 }
 
 void write_stability_tables(const StabilityOptions& o, const std::vector<StabilityResult>& results) {

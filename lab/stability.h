@@ -9,6 +9,7 @@
 // cell, so that a sweep goes on where it stopped and can run across
 // machines.
 #include "core/image_io.h"
+#include "core/job.h"
 #include "lab/scene.h"
 
 #include <nlohmann/json.hpp>
@@ -133,6 +134,11 @@ double stability_reference_seconds(const StabilityCell& cell);
 // is below that (a sky with next to nothing in it).
 StabilityResult classify(const Scene& scene, const ImageRGB& image, const ImageRGB* reference,
                          const ImageRGB* noise, double budget_percent);
+
+// The map's draws as a job (core/job.h): a (cell, point) each, kept in
+// stability_result_file, the cell's draws a group that shares its ground
+// truth. In planet_lab_gpu, as stability_points.
+Job stability_job(const StabilityOptions& options, const std::vector<StabilityCell>& cells);
 
 // Runs this shard's cells not yet done: renders each cell's ground truth
 // (cached), draws every point and classifies it, keeping one file per

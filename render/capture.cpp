@@ -221,59 +221,159 @@ std::optional<double> capture_error_budget(const FlightScript& script,
   return options.error_budget_percent ? options.error_budget_percent : script.error_budget_percent;
 }
 
-CaptureResult run_capture(const FlightScript& script, const CaptureOptions& options) {
-  const int total = script.frame_count();
+CapturePlan plan_capture(const FlightScript& script, const CaptureOptions& options) {
   check_frames(script, options);
-  const int first = options.first_frame;
-  const int end = options.end_frame < 0 ? total : options.end_frame;
+  if (script.body.has_atmosphere()) script_technique(script);
+  CapturePlan plan;
+  plan.total = script.frame_count();
+  plan.first = options.first_frame;
+  plan.end = options.end_frame < 0 ? plan.total : options.end_frame;
+  plan.budget = capture_error_budget(script, options);
+  if (plan.budget) {
+    plan.error_model = load_error_model(
+        options.error_model_file.empty() ? shipped_error_model_file() : options.error_model_file);
+  }
+  return plan;
+}
+
+namespace {
+
+// The governor the plan's budget runs, with the table the plan read.
+std::optional<Governor> capture_governor(const FlightScript& script, const CaptureOptions& options,
+                                         const CapturePlan& plan) {
+  if (!plan.budget) return std::nullopt;
+  GovernorSettings settings;
+  settings.budget_percent = *plan.budget;
+  // The model is the flight's throughout: its tables are built once.
+  settings.frames_per_model = plan.total;
+  // A switch waits half a second of the flight and fades over one, in at
+  // least a few frames.
+  settings.dwell_frames = std::max(3, int(std::lround(0.5 * script.frame_rate)));
+  settings.fade_frames = options.switch_fade_frames > 0
+                             ? options.switch_fade_frames
+                             : std::max(4, int(std::lround(1.0 * script.frame_rate)));
+  return Governor(*plan.error_model, settings, script.technique);
+}
+
+// The renderer as the script sets it, drawing every tile a view needs.
+void set_up_renderer(FrameRenderer& renderer, const FlightScript& script,
+                     const CaptureOptions& options) {
+  FrameOptions frame_options;
+  frame_options.antialiasing = script.antialiasing;
+  frame_options.terrain_shadows = script.terrain_shadows;
+  frame_options.stars = script.stars;
+  frame_options.glare = script.glare;
+  frame_options.auto_exposure = script.auto_exposure;
+  frame_options.terrain.pixel_budget = options.pixel_budget;
+  frame_options.terrain.cache_bytes = options.terrain_cache_bytes;
+  // A capture draws every tile the view needs at its level: frames must
+  // not depend on how fast tiles happened to be built.
+  frame_options.terrain_wait_s = kTerrainWaitSeconds;
+  renderer.set_options(frame_options);
+}
+
+// The folder made ready for the slice: unfinished until capture.json comes
+// back last, with no half-written file and no frame without its sidecar.
+// Frames beyond this flight's last are an earlier, longer capture's: no
+// slice of this one writes them, and they would make the folder look like
+// more than it is.
+FramesBeyond prepare_capture_folder(const CaptureOptions& options, const CapturePlan& plan) {
+  std::filesystem::create_directories(options.out_dir);
+  std::filesystem::remove(options.out_dir / "capture.json");
+  remove_stale_partials(options.out_dir);
+  remove_frames_without_sidecar(options.out_dir, plan.first, plan.end);
+  return remove_frames_beyond(options.out_dir, plan.total);
+}
+
+// The frame's files, each whole, made in the staging folder and then moved
+// into place together, the sidecar last: a capture killed at any moment
+// leaves whole frames, and a frame without its sidecar is not one (resume
+// from the first of those).
+void publish_frame(const StagingFolder& staging, const FlightScript& script, const FlightPath& path,
+                   double t, const Camera& camera, nlohmann::json& side, FrameRenderer& renderer,
+                   const std::string& stem, std::chrono::steady_clock::time_point& frame_start) {
+  try {
+    write_exr(staging.path() / (stem + ".exr"), script.width, script.height, renderer.read_hdr(),
+              frame_exr_extras(script, path, t, camera, side, renderer));
+    write_png(staging.path() / (stem + ".png"), script.width, script.height, renderer.read_ldr());
+    // The frame's time, from the end of the one before: the sum over a
+    // folder's frames is the time its runs spent on them (capture.json).
+    auto now = std::chrono::steady_clock::now();
+    side["wall_seconds"] = std::chrono::duration<double>(now - frame_start).count();
+    frame_start = now;
+    write_file_atomically(staging.path() / (stem + ".json"), side.dump(2) + "\n");
+  } catch (const SystemError& e) {
+    throw SystemError(staging.as_published(e.what()));
+  }
+  for (const char* extension : {".exr", ".png", ".json"}) staging.publish(stem + extension);
+}
+
+// capture.json describes the folder: this run's frames and those earlier
+// runs (an interrupted one, the slices before) left beside them whole, of
+// this capture, and the time they all took. A share keeps to its own
+// frames.
+void write_capture_summary(const FlightScript& script, const CaptureOptions& options,
+                           const CapturePlan& plan, const FlightPath& path,
+                           const nlohmann::json& overrides, CaptureResult& result) {
+  const nlohmann::json image = image_json(script);
+  auto of_this_capture = [&](int frame, const nlohmann::json& side) {
+    double t = script.frame_time(frame);
+    glm::dvec3 pos = path.camera_at(t).pos_body;
+    return side.at("frame") == frame && side.at("time_s") == t &&
+           side.at("body") == script.body.name && side.at("image") == image &&
+           side.at("camera").at("position_body_m") == nlohmann::json{pos.x, pos.y, pos.z} &&
+           (plan.budget || side.at("technique") == script.technique) &&
+           side.value("overrides", nlohmann::json::object()) == overrides;
+  };
+  const std::pair<int, int> bounds =
+      options.share.whole() ? std::pair{0, plan.total} : std::pair{plan.first, plan.end};
+  result.folder = whole_frames_around(options.out_dir, plan.first, plan.end, bounds.first,
+                                      bounds.second, of_this_capture);
+  nlohmann::json summary = {
+      {"flight", script.file.string()},
+      {"frames",
+       {{"first", result.folder.first},
+        {"end", result.folder.end},
+        {"total_in_flight", plan.total}}},
+      {"frame_rate", script.frame_rate},
+      {"image", image},
+      {"technique",
+       plan.budget ? fmt::format("governor, budget {:g} %", *plan.budget) : script.technique},
+      {"wall_seconds", result.folder.wall_seconds},
+  };
+  if (!overrides.empty()) summary["overrides"] = overrides;
+  // A share says what it is a share of, for the merge (capture_shares.h);
+  // the merged capture.json is again the one a run at once writes.
+  if (!options.share.whole()) {
+    summary["share"] = options.share.label();
+    summary["flight_hash"] = flight_script_hash(script);
+    summary["planet"] = planet_version();
+  }
+  write_file_atomically(options.out_dir / "capture.json", summary.dump(2) + "\n");
+}
+
+}  // namespace
+
+CaptureResult run_capture(const FlightScript& script, const CaptureOptions& options) {
+  return run_capture(script, options, plan_capture(script, options));
+}
+
+CaptureResult run_capture(const FlightScript& script, const CaptureOptions& options,
+                          const CapturePlan& plan) {
+  const int first = plan.first, end = plan.end, total = plan.total;
+  std::optional<Governor> governor = capture_governor(script, options, plan);
   std::optional<AtmosphereModel> atmosphere;
   std::unique_ptr<AtmosphereTechnique> technique;
-  const std::optional<double> budget = capture_error_budget(script, options);
-  std::optional<Governor> governor;
-  if (budget) {
-    GovernorSettings settings;
-    settings.budget_percent = *budget;
-    // The model is the flight's throughout: its tables are built once.
-    settings.frames_per_model = total;
-    // A switch waits half a second of the flight and fades over one, in at
-    // least a few frames.
-    settings.dwell_frames = std::max(3, int(std::lround(0.5 * script.frame_rate)));
-    settings.fade_frames = options.switch_fade_frames > 0
-                               ? options.switch_fade_frames
-                               : std::max(4, int(std::lround(1.0 * script.frame_rate)));
-    governor.emplace(load_error_model(options.error_model_file.empty() ? shipped_error_model_file()
-                                                                       : options.error_model_file),
-                     settings, script.technique);
-  }
   if (script.body.has_atmosphere()) {
     atmosphere = load_atmosphere(script.body);
     if (!governor) technique = make_technique(script_technique(script));
   }
-  std::filesystem::create_directories(options.out_dir);
-  const auto finished_marker = options.out_dir / "capture.json";
-  std::filesystem::remove(finished_marker);
-  remove_stale_partials(options.out_dir);
-  remove_frames_without_sidecar(options.out_dir, first, end);
   CaptureResult result;
-  // Frames beyond this flight's last are an earlier, longer capture's: no
-  // slice of this one writes them, and they would make the folder look
-  // like more than it is.
-  result.removed = remove_frames_beyond(options.out_dir, total);
+  result.removed = prepare_capture_folder(options, plan);
   StagingFolder staging(options.out_dir);
 
   FrameRenderer renderer(script.width, script.height);
-  renderer.set_antialiasing(script.antialiasing);
-  renderer.set_terrain_shadows(script.terrain_shadows);
-  renderer.set_stars(script.stars);
-  renderer.set_glare(script.glare);
-  renderer.set_auto_exposure(script.auto_exposure);
-  TerrainOptions terrain;
-  terrain.pixel_budget = options.pixel_budget;
-  terrain.cache_bytes = options.terrain_cache_bytes;
-  renderer.set_terrain_options(terrain);
-  // A capture draws every tile the view needs at its level: frames must
-  // not depend on how fast tiles happened to be built.
-  renderer.set_terrain_wait(kTerrainWaitSeconds);
+  set_up_renderer(renderer, script, options);
   renderer.set_body(script.body, atmosphere, std::move(technique));
   FlightPath path(script);
   Geodesy geodesy(script.body.shape);
@@ -321,27 +421,9 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
     nlohmann::json side = sidecar(script, path, geodesy, frame, t, camera, exposure, sun, stats,
                                   renderer.terrain_stats(),
                                   decision ? decision->choice : script.technique);
-    if (decision) side["governor"] = decision->to_json(*budget);
+    if (decision) side["governor"] = decision->to_json(*plan.budget);
     if (!overrides.empty()) side["overrides"] = overrides;
-    // The frame's files, each whole, are made in the staging folder and
-    // then moved into place together, the sidecar last: a capture killed at
-    // any moment leaves whole frames, and a frame without its sidecar is
-    // not one (resume from the first of those).
-    try {
-      write_exr(staging.path() / (stem + ".exr"), script.width, script.height,
-                renderer.read_hdr(), frame_exr_extras(script, path, t, camera, side, renderer));
-      write_png(staging.path() / (stem + ".png"), script.width, script.height,
-                renderer.read_ldr());
-      // The frame's time, from the end of the one before: the sum over a
-      // folder's frames is the time its runs spent on them (capture.json).
-      auto now = std::chrono::steady_clock::now();
-      side["wall_seconds"] = std::chrono::duration<double>(now - frame_start).count();
-      frame_start = now;
-      write_file_atomically(staging.path() / (stem + ".json"), side.dump(2) + "\n");
-    } catch (const SystemError& e) {
-      throw SystemError(staging.as_published(e.what()));
-    }
-    for (const char* extension : {".exr", ".png", ".json"}) staging.publish(stem + extension);
+    publish_frame(staging, script, path, t, camera, side, renderer, stem, frame_start);
     if (frame == first) result.first_png = options.out_dir / (stem + ".png");
     result.last_png = options.out_dir / (stem + ".png");
     ++result.frames;
@@ -353,43 +435,7 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
   result.wall_seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   progress.finish();
-
-  // capture.json describes the folder: this run's frames and those
-  // earlier runs (an interrupted one, the slices before) left beside them
-  // whole, of this capture, and the time they all took. A share keeps to
-  // its own frames.
-  const nlohmann::json image = image_json(script);
-  auto of_this_capture = [&](int frame, const nlohmann::json& side) {
-    double t = script.frame_time(frame);
-    glm::dvec3 pos = path.camera_at(t).pos_body;
-    return side.at("frame") == frame && side.at("time_s") == t &&
-           side.at("body") == script.body.name && side.at("image") == image &&
-           side.at("camera").at("position_body_m") == nlohmann::json{pos.x, pos.y, pos.z} &&
-           (budget || side.at("technique") == script.technique) &&
-           side.value("overrides", nlohmann::json::object()) == overrides;
-  };
-  const std::pair<int, int> bounds =
-      options.share.whole() ? std::pair{0, total} : std::pair{first, end};
-  result.folder = whole_frames_around(options.out_dir, first, end, bounds.first, bounds.second,
-                                      of_this_capture);
-  nlohmann::json summary = {
-      {"flight", script.file.string()},
-      {"frames",
-       {{"first", result.folder.first}, {"end", result.folder.end}, {"total_in_flight", total}}},
-      {"frame_rate", script.frame_rate},
-      {"image", image},
-      {"technique", budget ? fmt::format("governor, budget {:g} %", *budget) : script.technique},
-      {"wall_seconds", result.folder.wall_seconds},
-  };
-  if (!overrides.empty()) summary["overrides"] = overrides;
-  // A share says what it is a share of, for the merge (capture_shares.h);
-  // the merged capture.json is again the one a run at once writes.
-  if (!options.share.whole()) {
-    summary["share"] = options.share.label();
-    summary["flight_hash"] = flight_script_hash(script);
-    summary["planet"] = planet_version();
-  }
-  write_file_atomically(finished_marker, summary.dump(2) + "\n");
+  write_capture_summary(script, options, plan, path, overrides, result);
   return result;
 }
 

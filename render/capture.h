@@ -6,6 +6,7 @@
 // removed first, so a capture that stops half-way never looks finished.
 #include "atmosphere/gpu/registry.h"
 #include "core/share.h"
+#include "governor/governor.h"
 #include "render/capture_folder.h"
 #include "render/capture_overrides.h"
 #include "sim/flight_script.h"
@@ -79,8 +80,22 @@ void check_keyframes_above_ground(const FlightScript& script, const GroundHeight
 // program's version.
 std::string flight_script_hash(const FlightScript& script);
 
+// A capture's inputs, checked once before GL starts, and what they give:
+// the slice of frames (check_frames), the script's technique
+// (script_technique) and, where the governor chooses, its budget and its
+// table, read here once. InputError for any of them.
+struct CapturePlan {
+  int first = 0, end = 0, total = 0;      // the slice [first, end) of the flight's total
+  std::optional<double> budget;           // capture_error_budget
+  std::optional<ErrorModel> error_model;  // with a budget
+};
+CapturePlan plan_capture(const FlightScript& script, const CaptureOptions& options);
+
 // Needs a current GL context. Each frame's sidecar JSON is written after its
 // images, so a frame with a sidecar is complete.
+CaptureResult run_capture(const FlightScript& script, const CaptureOptions& options,
+                          const CapturePlan& plan);
+// The same, planned here.
 CaptureResult run_capture(const FlightScript& script, const CaptureOptions& options);
 
 }  // namespace planet

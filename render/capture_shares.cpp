@@ -117,29 +117,12 @@ void copy_atomically(const std::filesystem::path& from, const std::filesystem::p
 MergedCapture merge_capture_shares(const std::vector<std::filesystem::path>& inputs,
                                    const std::filesystem::path& out) {
   if (inputs.empty()) throw InputError("--merge: name the folders of the shares");
-  std::vector<CaptureShare> shares;
-  for (const std::filesystem::path& input : inputs) {
-    for (const std::filesystem::path& dir : share_dirs(input)) {
-      shares.push_back(read_capture_share(dir));
-    }
-  }
+  const auto shares = read_shares<CaptureShare>(inputs, share_dirs, read_capture_share);
   // One capture: every share agrees with the most of them, and was made by
   // this program.
-  for (size_t f = 0; f < shares.front().fields.size(); ++f) {
-    std::map<std::string, int> votes;
-    std::string best;
-    for (const CaptureShare& s : shares) {
-      const std::string& value = s.fields[f].second;
-      if (++votes[value] > votes[best] || best.empty()) best = value;
-    }
-    for (const CaptureShare& s : shares) {
-      if (s.fields[f].second != best) {
-        throw InputError(fmt::format("{}: share {} is of {} {}, the other shares of {}",
-                                     s.dir.string(), s.share.label(), s.fields[f].first,
-                                     s.fields[f].second, best));
-      }
-    }
-  }
+  std::vector<ShareOf> of;
+  for (const CaptureShare& s : shares) of.push_back({s.dir, s.share, s.fields});
+  require_one_job(of);
   for (const CaptureShare& s : shares) {
     if (s.fields.back().second != planet_version()) {
       throw InputError(
@@ -150,23 +133,18 @@ MergedCapture merge_capture_shares(const std::vector<std::filesystem::path>& inp
   }
   const int count = shares.front().share.count;
   const int total = shares.front().total;
-  std::vector<const CaptureShare*> by_index(size_t(count), nullptr);
-  for (const CaptureShare& s : shares) {
-    const CaptureShare*& slot = by_index[size_t(s.share.index)];
-    if (slot) {
-      throw InputError(fmt::format("share {} is given twice: {} and {}", s.share.label(),
-                                   slot->dir.string(), s.dir.string()));
-    }
-    slot = &s;
-    if (std::make_pair(s.first, s.end) != share_range(s.share, total)) {
-      throw InputError(fmt::format(
-          "{}: share {} holds frames {}:{}, not its share {}:{}", s.dir.string(), s.share.label(),
-          s.first, s.end, share_range(s.share, total).first, share_range(s.share, total).second));
+  std::vector<const CaptureShare*> by_index;
+  for (const ShareOf* s : shares_by_index(of, "the capture", inputs)) {
+    by_index.push_back(&shares[size_t(s - of.data())]);
+  }
+  for (const CaptureShare* s : by_index) {
+    if (std::make_pair(s->first, s->end) != share_range(s->share, total)) {
+      throw InputError(fmt::format("{}: share {} holds frames {}:{}, not its share {}:{}",
+                                   s->dir.string(), s->share.label(), s->first, s->end,
+                                   share_range(s->share, total).first,
+                                   share_range(s->share, total).second));
     }
   }
-  std::vector<bool> present(static_cast<size_t>(count), false);
-  for (int k = 0; k < count; ++k) present[size_t(k)] = by_index[size_t(k)] != nullptr;
-  require_every_share(present, "the capture", inputs);
   // Every frame's files, before anything is copied.
   const std::vector<std::string> kinds = {".exr", ".png", ".json"};
   for (const CaptureShare* s : by_index) {

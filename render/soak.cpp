@@ -101,6 +101,112 @@ nlohmann::json SoakResult::to_json() const {
           {"samples", samples_json}};
 }
 
+namespace {
+
+// Where a frame of a leg looks from: `u` of the way along the leg, up from
+// 2 m to the top and down again, evenly in the logarithm of the height,
+// along the same track every round (a round after the warm-up asks for
+// just what the warm-up did, so whatever it holds more is kept, not
+// needed).
+struct LegView {
+  Camera camera;
+  glm::dvec3 sun;
+  double above_m = 0;  // over the ground
+};
+
+LegView leg_view(const Visit& v, const Geodesy& geodesy, double u) {
+  double s = 1.0 - std::abs(2.0 * u - 1.0);
+  Geodetic place{glm::radians(20.0), glm::radians(20.0 * u), 0.0};
+  double ground = ground_height(*v.surface, geodesy, place);
+  LegView view;
+  view.above_m = 2.0 * std::pow(v.top_m / 2.0, s);
+  place.height = ground + view.above_m;
+  view.camera =
+      geodesy.camera_at(place, glm::radians(360.0 * u), glm::radians(-10.0), glm::radians(60.0));
+  view.sun = geodesy.body_direction(place, glm::radians(25.0), glm::radians(140.0));
+  return view;
+}
+
+// What the soak watches between frames: memory and GL objects sampled
+// every few frames and at the end of each round, their peaks in the
+// warm-up and after it.
+struct SoakWatch {
+  double warmup_peak = 0;
+  long warmup_gl_fixed_peak = 0;
+  std::vector<double> cycle_end_rss;
+  std::vector<GlObjectCounts> cycle_end_gl;
+
+  void sample(SoakResult& r, int frame, const std::string& body, const std::string& technique,
+              double above_m, const TerrainStats& ts, bool cycle_end) {
+    {
+      DriverWait wait("finishing a frame of the soak");
+      glFinish();
+    }
+    const double tiles = double(ts.bytes_resident) / double(1 << 20);
+    SoakSample s{frame,
+                 body,
+                 technique,
+                 above_m,
+                 resident_mib(),
+                 heap_in_use_mib(),
+                 tiles,
+                 ts.tiles_on_gpu,
+                 live_gl_objects()};
+    const long fixed = s.gl.total() - long(s.tiles);
+    if (cycle_end) {
+      cycle_end_gl.push_back(s.gl);
+      cycle_end_rss.push_back(s.rss_mib);
+    }
+    if (frame < r.warmup_frames) {
+      warmup_peak = std::max(warmup_peak, s.rss_mib);
+      warmup_gl_fixed_peak = std::max(warmup_gl_fixed_peak, fixed);
+      if (cycle_end) r.gl_fixed_start = fixed;
+    } else {
+      r.rss_peak_mib = std::max(r.rss_peak_mib, s.rss_mib);
+      r.gl_fixed_peak = std::max(r.gl_fixed_peak, fixed);
+    }
+    r.samples.push_back(s);
+  }
+};
+
+// After the last round: where the warm-up left memory and GL objects (the
+// same phase, the end of a round, as every later round is measured at, and
+// the highest it reached), and whether the rounds after it stayed there.
+void judge(const SoakOptions& o, const SoakWatch& w, SoakResult& r) {
+  const size_t warm = size_t(o.warmup_cycles) - 1;
+  r.rss_start_mib = w.cycle_end_rss[warm];
+  r.rss_end_mib = w.cycle_end_rss.back();
+  r.rss_warmup_peak_mib = w.warmup_peak;
+  r.gl_start = w.cycle_end_gl[warm];
+  r.gl_end = w.cycle_end_gl.back();
+  r.gl_peak = *std::max_element(w.cycle_end_gl.begin(), w.cycle_end_gl.end(),
+                                [](const auto& a, const auto& b) { return a.total() < b.total(); });
+  const double limit = std::max(r.rss_start_mib, w.warmup_peak) * (1.0 + o.rss_tolerance);
+  if (r.rss_peak_mib > limit) {
+    r.failures.push_back(fmt::format(
+        "resident memory peaked at {:.1f} MiB after the warm-up, over {:.1f} MiB ({:.0f} % above "
+        "the warm-up's {:.1f} MiB)",
+        r.rss_peak_mib, limit, 100.0 * o.rss_tolerance, std::max(r.rss_start_mib, w.warmup_peak)));
+  }
+  if (r.rss_end_mib > r.rss_start_mib * (1.0 + o.rss_tolerance)) {
+    r.failures.push_back(fmt::format(
+        "resident memory at the end of the last round is {:.1f} MiB, {:.1f} % above the {:.1f} "
+        "MiB at the end of the warm-up",
+        r.rss_end_mib, 100.0 * (r.rss_end_mib / r.rss_start_mib - 1.0), r.rss_start_mib));
+  }
+  // The tile cache's buffers follow the view within its budget (checked
+  // each frame); everything else must come back to where the warm-up left
+  // it.
+  if (r.gl_fixed_peak > w.warmup_gl_fixed_peak) {
+    r.failures.push_back(fmt::format(
+        "GL objects outside the terrain's tile cache reached {} after the warm-up, over the {} "
+        "they reached in it",
+        r.gl_fixed_peak, w.warmup_gl_fixed_peak));
+  }
+}
+
+}  // namespace
+
 SoakResult run_soak(const SoakOptions& o,
                     const std::function<void(int, int, const std::string&)>& progress,
                     const std::function<bool()>& stop) {
@@ -119,16 +225,13 @@ SoakResult run_soak(const SoakOptions& o,
   r.tiles_budget_mib = double(o.terrain_cache_bytes) / double(1 << 20);
 
   FrameRenderer renderer(o.width, o.height);
-  TerrainOptions terrain;
-  terrain.cache_bytes = o.terrain_cache_bytes;
-  renderer.set_terrain_options(terrain);
-  renderer.set_terrain_wait(60.0);
+  FrameOptions frame_options;
+  frame_options.terrain.cache_bytes = o.terrain_cache_bytes;
+  frame_options.terrain_wait_s = 60.0;
+  renderer.set_options(frame_options);
 
   auto start = std::chrono::steady_clock::now();
-  double warmup_peak = 0;
-  long warmup_gl_fixed_peak = 0;
-  std::vector<double> cycle_end_rss;
-  std::vector<GlObjectCounts> cycle_end_gl;
+  SoakWatch watch;
   int frame = 0;
   for (int leg = 0; leg < legs && !r.interrupted; ++leg) {
     Visit v = visit(o.bodies[size_t(leg) % o.bodies.size()]);
@@ -151,20 +254,8 @@ SoakResult run_soak(const SoakOptions& o,
         renderer.swap_technique(technique_for(choice, *v.atmosphere));
         technique_index = wanted;
       }
-      // Up from 2 m to the top and down again, evenly in the logarithm of
-      // the height, along the same track every round: a round after the
-      // warm-up asks for just what the warm-up did, so whatever it holds
-      // more is kept, not needed.
-      double u = (i + 0.5) / leg_frames;
-      double s = 1.0 - std::abs(2.0 * u - 1.0);
-      Geodetic place{glm::radians(20.0), glm::radians(20.0 * u), 0.0};
-      double ground = ground_height(*v.surface, geodesy, place);
-      double above = 2.0 * std::pow(v.top_m / 2.0, s);
-      place.height = ground + above;
-      Camera camera = geodesy.camera_at(place, glm::radians(360.0 * u), glm::radians(-10.0),
-                                        glm::radians(60.0));
-      glm::dvec3 sun = geodesy.body_direction(place, glm::radians(25.0), glm::radians(140.0));
-      renderer.render(camera, sun, 1.0);
+      LegView view = leg_view(v, geodesy, (i + 0.5) / leg_frames);
+      renderer.render(view.camera, view.sun, 1.0);
 
       const TerrainStats& ts = renderer.terrain_stats();
       double tiles = double(ts.bytes_resident) / double(1 << 20);
@@ -175,66 +266,17 @@ SoakResult run_soak(const SoakOptions& o,
       }
       bool cycle_end = i == leg_frames - 1 && (leg + 1) % int(o.bodies.size()) == 0;
       if (frame % o.sample_every == 0 || cycle_end) {
-        {
-          DriverWait wait("finishing a frame of the soak");
-          glFinish();
-        }
-        SoakSample sample{frame, v.body.name, choice, above, resident_mib(), heap_in_use_mib(),
-                          tiles, ts.tiles_on_gpu, live_gl_objects()};
-        const long fixed = sample.gl.total() - long(sample.tiles);
-        if (cycle_end) {
-          cycle_end_gl.push_back(sample.gl);
-          cycle_end_rss.push_back(sample.rss_mib);
-        }
-        if (frame < r.warmup_frames) {
-          warmup_peak = std::max(warmup_peak, sample.rss_mib);
-          warmup_gl_fixed_peak = std::max(warmup_gl_fixed_peak, fixed);
-          if (cycle_end) r.gl_fixed_start = fixed;
-        } else {
-          r.rss_peak_mib = std::max(r.rss_peak_mib, sample.rss_mib);
-          r.gl_fixed_peak = std::max(r.gl_fixed_peak, fixed);
-        }
-        r.samples.push_back(sample);
+        watch.sample(r, frame, v.body.name, choice, view.above_m, ts, cycle_end);
       }
       if (progress) {
-        progress(frame + 1, total, fmt::format("{} {} {:.0f} m", v.body.name, choice, above));
+        progress(frame + 1, total,
+                 fmt::format("{} {} {:.0f} m", v.body.name, choice, view.above_m));
       }
     }
   }
   r.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (r.interrupted || int(cycle_end_rss.size()) <= o.warmup_cycles) return r;
-
-  // Where the warm-up left it: the same phase (the end of a round) as every
-  // later round is measured at, and the highest it reached.
-  const size_t warm = size_t(o.warmup_cycles) - 1;
-  r.rss_start_mib = cycle_end_rss[warm];
-  r.rss_end_mib = cycle_end_rss.back();
-  r.rss_warmup_peak_mib = warmup_peak;
-  r.gl_start = cycle_end_gl[warm];
-  r.gl_end = cycle_end_gl.back();
-  r.gl_peak = *std::max_element(cycle_end_gl.begin(), cycle_end_gl.end(),
-                                [](const auto& a, const auto& b) { return a.total() < b.total(); });
-  const double limit = std::max(r.rss_start_mib, warmup_peak) * (1.0 + o.rss_tolerance);
-  if (r.rss_peak_mib > limit) {
-    r.failures.push_back(fmt::format(
-        "resident memory peaked at {:.1f} MiB after the warm-up, over {:.1f} MiB ({:.0f} % above "
-        "the warm-up's {:.1f} MiB)",
-        r.rss_peak_mib, limit, 100.0 * o.rss_tolerance, std::max(r.rss_start_mib, warmup_peak)));
-  }
-  if (r.rss_end_mib > r.rss_start_mib * (1.0 + o.rss_tolerance)) {
-    r.failures.push_back(fmt::format(
-        "resident memory at the end of the last round is {:.1f} MiB, {:.1f} % above the {:.1f} "
-        "MiB at the end of the warm-up",
-        r.rss_end_mib, 100.0 * (r.rss_end_mib / r.rss_start_mib - 1.0), r.rss_start_mib));
-  }
-  // The tile cache's buffers follow the view within its budget (checked
-  // above); everything else must come back to where the warm-up left it.
-  if (r.gl_fixed_peak > warmup_gl_fixed_peak) {
-    r.failures.push_back(fmt::format(
-        "GL objects outside the terrain's tile cache reached {} after the warm-up, over the {} "
-        "they reached in it",
-        r.gl_fixed_peak, warmup_gl_fixed_peak));
-  }
+  if (r.interrupted || int(watch.cycle_end_rss.size()) <= o.warmup_cycles) return r;
+  judge(o, watch, r);
   return r;
 }
 

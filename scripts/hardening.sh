@@ -1,31 +1,69 @@
 #!/usr/bin/env bash
-# The hardening builds, run by CI after the README's test command:
-#   1. every target under AddressSanitizer + UndefinedBehaviorSanitizer
-#      (clang, -O0: a third of the compile time of -O1) and the whole test
-#      suite under them, GL tests included (Mesa's llvmpipe);
-#   2. each libFuzzer target of that build for PLANET_FUZZ_SECONDS (20);
-#   3. the CPU tests that run threads (the path tracer's pool, the shares,
-#      the tile cache's workers) under ThreadSanitizer (-O1);
-#   4. tsan-ci: the same build, the threaded tests less the three that
-#      check the path tracer's accuracy (minutes each under TSan, and
-#      threaded as SameBitsAtOneAndTwoThreads is, which stays).
-# Any sanitizer report fails the run; tests/sanitizers/*.supp hold the
+# The hardening builds and runs (docs/testing.md#hardening). Steps:
+#   asan-quick   every target under AddressSanitizer + UndefinedBehaviorSanitizer
+#                (clang, -O1; build-asan/) and the quick tier under them, whole,
+#                GL tests included (Mesa's llvmpipe): the tests `./build.sh test`
+#                runs
+#   asan-long [K/N]  share K of N (K from 0) of the long tier under the same
+#                build: the long tier's tests sorted by name, every N-th from
+#                the K-th. Without K/N, share K of PLANET_ASAN_LONG_SHARES (2),
+#                K the commit's number (git rev-list --count HEAD) modulo N,
+#                so that N commits in a row run every share; a share that failed runs
+#                again by hand with the K/N it printed;
+#                PLANET_ASAN_LONG_LIST=1 lists the share's tests, runs none
+#   asan         the whole suite under the same build (by hand: it does not
+#                fit in CI's time)
+#   fuzz         each libFuzzer target of that build for PLANET_FUZZ_SECONDS (20)
+#   tsan         the CPU tests that run threads (the path tracer's pool, the
+#                shares, the tile cache's workers) under ThreadSanitizer (-O1)
+#   tsan-ci      the same build, the threaded tests less the three that check
+#                the path tracer's accuracy (minutes each under TSan, and
+#                threaded as SameBitsAtOneAndTwoThreads is, which stays)
+# The ASan build is made once a run, however many steps use it. Any
+# sanitizer report fails the run; tests/sanitizers/*.supp hold the
 # suppressions, each with its reason.
-#   scripts/hardening.sh [asan|fuzz|tsan|tsan-ci]...   (default: asan fuzz tsan)
-# CI runs `fuzz` and `tsan-ci`: the whole suite under ASan does not fit
-# in its time (docs/testing.md#sanitizers).
+#   scripts/hardening.sh [STEP [K/N]]...   (default: asan fuzz tsan)
+# CI (.ci/run) runs asan-quick fuzz tsan-ci; asan-long runs by hand.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
-steps=("$@")
-[ ${#steps[@]} -eq 0 ] && steps=(asan fuzz tsan)
+[ $# -eq 0 ] && set -- asan fuzz tsan
 asan_dir="${PLANET_ASAN_BUILD_DIR:-build-asan}"
 tsan_dir="${PLANET_TSAN_BUILD_DIR:-build-tsan}"
 seconds="${PLANET_FUZZ_SECONDS:-20}"
+shares="${PLANET_ASAN_LONG_SHARES:-2}"
 jobs="$(nproc)"
 supp="$root/tests/sanitizers"
 
-scripts/install-deps.sh
+# The steps, each asan-long with its share, checked before any work.
+steps=()
+while [ $# -gt 0 ]; do
+  step="$1"
+  shift
+  case "$step" in
+    asan|asan-quick|fuzz|tsan|tsan-ci) steps+=("$step") ;;
+    asan-long)
+      if [[ "${1:-}" == */* ]]; then
+        share="$1"
+        shift
+      else
+        # The commit's number in its history: N commits in a row run every
+        # share.
+        count="$(git rev-list --count HEAD 2> /dev/null)" ||
+          { echo "hardening.sh: asan-long without K/N needs a git checkout (its commit picks K)" >&2; exit 2; }
+        share="$(( count % shares ))/$shares"
+      fi
+      if ! [[ "$share" =~ ^([0-9]+)/([0-9]+)$ ]] || [ "${BASH_REMATCH[1]}" -ge "${BASH_REMATCH[2]}" ]; then
+        echo "hardening.sh: asan-long takes K/N with 0 <= K < N, not '$share'" >&2
+        exit 2
+      fi
+      steps+=("asan-long $share")
+      ;;
+    *) echo "hardening.sh: unknown step '$step' (asan-quick, asan-long [K/N], asan, fuzz, tsan, tsan-ci)" >&2; exit 2 ;;
+  esac
+done
+
+[ "${PLANET_ASAN_LONG_LIST:-}" = 1 ] || scripts/install-deps.sh
 
 configure() {  # DIR SANITIZERS OPTIMISATION [extra cmake arguments]
   local dir="$1" sanitize="$2" opt="$3"
@@ -36,23 +74,81 @@ configure() {  # DIR SANITIZERS OPTIMISATION [extra cmake arguments]
     -DPLANET_WERROR=ON "$@" > /dev/null
 }
 
+# -O1: the quick tier's CPU tests run several times faster than at -O0
+# (glm's vector code inlined), which more than pays for the slower build.
+asan_built=0
+build_asan() {  # [TARGET...]: those alone, where no step before built them all
+  [ "$asan_built" = 1 ] && return
+  configure "$asan_dir" address,undefined -O1 -DPLANET_FUZZ=ON
+  if [ $# -gt 0 ]; then
+    cmake --build "$asan_dir" -j"$jobs" --target "$@"
+  else
+    cmake --build "$asan_dir" -j"$jobs"
+    asan_built=1
+  fi
+}
+
+# The long tier's share K of N: its tests sorted by name, every N-th from
+# the K-th, one a line.
+long_share() {  # K N
+  (cd "$asan_dir" && ctest -N -L long) | sed -n 's/^ *Test *#[0-9]*: //p' | LC_ALL=C sort |
+    awk -v k="$1" -v n="$2" '(NR - 1) % n == k'
+}
+# The same as an anchored regular expression for ctest -R.
+long_share_pattern() {  # K N
+  long_share "$1" "$2" |
+    awk '{ gsub(/[.*+?()|\[\]{}^$]/, "\\\\&"); names = names sep $0; sep = "|" } END { print "^(" names ")$" }'
+}
+
 export ASAN_OPTIONS="detect_leaks=1:check_initialization_order=1:detect_stack_use_after_return=1:abort_on_error=0"
-export LSAN_OPTIONS="suppressions=$supp/lsan.supp:print_suppressions=0"
+# Read from a copy outside the source tree: a test puts the tree out of
+# reach (installed_program_runs_outside_the_source_tree), and ASan stops a
+# program whose suppressions it cannot read.
+lsan_supp="$(mktemp)"
+trap 'rm -f "$lsan_supp"' EXIT
+cp "$supp/lsan.supp" "$lsan_supp"
+export LSAN_OPTIONS="suppressions=$lsan_supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+
+# The window's tests (fly under Xvfb) run with leak checking off, their
+# memory errors still checked: what leaks there is 2 x 56 bytes that a
+# library X loads and unloads keeps, which a suppression cannot name
+# (tests/sanitizers/README.md). Each test may run twice: LeakSanitizer's
+# own tracer at exit sometimes fails on this machine ("LeakSanitizer has
+# encountered a fatal error"); a report that a test makes twice fails it.
+window_tests='^fly_'
+asan_ctest() {  # ctest arguments
+  (cd "$asan_dir" && ctest --output-on-failure -j"$jobs" --repeat until-pass:2 -E "$window_tests" "$@")
+  (cd "$asan_dir" && ASAN_OPTIONS="$ASAN_OPTIONS:detect_leaks=0" \
+    ctest --output-on-failure -j"$jobs" --repeat until-pass:2 -R "$window_tests" "$@")
+}
 
 for step in "${steps[@]}"; do
   start=$(date +%s)
   case "$step" in
     asan)
-      configure "$asan_dir" address,undefined -O0 -DPLANET_FUZZ=ON
-      cmake --build "$asan_dir" -j"$jobs"
-      (cd "$asan_dir" && ctest --output-on-failure -j"$jobs")
+      build_asan
+      asan_ctest
+      ;;
+    asan-quick)
+      build_asan
+      asan_ctest -LE long
+      ;;
+    asan-long*)
+      share="${step#asan-long }"
+      if [ "${PLANET_ASAN_LONG_LIST:-}" = 1 ]; then  # the share's names alone, from any build
+        long_share "${share%/*}" "${share#*/}"
+        continue
+      fi
+      build_asan
+      echo "hardening: $step (again by hand: scripts/hardening.sh asan-long $share)"
+      names="$(long_share_pattern "${share%/*}" "${share#*/}")"
+      (cd "$asan_dir" && ctest --output-on-failure -j"$jobs" --no-tests=error -L long -R "$names")
       ;;
     fuzz)
-      configure "$asan_dir" address,undefined -O0 -DPLANET_FUZZ=ON
       targets=()
       for f in tests/fuzz/*_fuzz.cpp; do targets+=("fuzz_$(basename "$f" _fuzz.cpp)"); done
-      cmake --build "$asan_dir" -j"$jobs" --target "${targets[@]}"
+      build_asan "${targets[@]}"
       scripts/fuzz.sh "$asan_dir" "$seconds"
       ;;
     tsan|tsan-ci)
@@ -67,7 +163,6 @@ for step in "${steps[@]}"; do
       TSAN_OPTIONS="halt_on_error=1:second_deadlock_stack=1:suppressions=$supp/tsan.supp" \
         PLANET_ROOT="$root" "$tsan_dir/tests/planet_tests" --gtest_filter="$filter"
       ;;
-    *) echo "hardening.sh: unknown step '$step' (asan, fuzz, tsan, tsan-ci)" >&2; exit 2 ;;
   esac
   echo "hardening: $step passed in $(( $(date +%s) - start )) s"
 done

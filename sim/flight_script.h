@@ -58,7 +58,7 @@ struct FlightScript {
   // on unless given.
   bool stars = true;
   // "image": {"glare": true}: the eye's glare around the sun (render/frame.h's
-  // set_glare), as fly draws it; off unless given (or capture --glare).
+  // FrameOptions::glare), as fly draws it; off unless given (or capture --glare).
   bool glare = false;
   double frame_rate = 0;
   double exposure = 1;  // multiplies radiance before tone mapping; the default for keyframes

@@ -34,6 +34,9 @@ fly() {
   done
   sleep 0.5
   for key in $keys; do
+    # "settle": the new body's first tiles load for two seconds (for a few
+    # frames after a switch its coarsest tiles can fill the view).
+    [ "$key" = settle ] && { sleep 2; continue; }
     local want=$(( $(wc -l < "$out") + 1 ))
     # GLFW samples key state once a frame: hold each key across a few frames.
     xdotool keydown "$key"; sleep 0.5; xdotool keyup "$key"
@@ -63,7 +66,7 @@ grep -q "^body: Asteroid, 2\.0 m above the ground (-30[0-9]\.[0-9] m above the e
   fail "the asteroid's height does not count from its ground"
 
 # By night: the Alps at 01:30 local solar time, then Mars at the same hour.
-fly night "b F12" --time 2026-06-21T23:00:00Z --height 100
+fly night "b settle F12" --time 2026-06-21T23:00:00Z --height 100
 grep -q "^body: Earth, .*; sun -[0-9.]* deg: night, the exposure follows the scene (auto)$" "$out" ||
   fail "the night start does not say night or turn the exposure automatic"
 grep -q "^body: Mars, 100\.0 m above the ground .*local solar time 23:3[01] .*; sun -[0-9.]* deg: night$" "$out" ||

@@ -42,3 +42,6 @@ expect_failure(no_egl 1 ENV "__EGL_VENDOR_LIBRARY_FILENAMES=${WORK}/none.json"
 # A driver that offers only OpenGL 3.3.
 expect_failure(old_gl 1 ENV "MESA_GL_VERSION_OVERRIDE=3.3"
                ARGS capture --flight "${FLIGHT}" FRAGMENTS "4.5" "install")
+# A schedule that is none of software, plain or auto.
+expect_failure(bad_schedule 2 ARGS capture --flight "${FLIGHT}" --schedule fast
+               FRAGMENTS "--schedule" "fast")

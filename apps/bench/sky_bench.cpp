@@ -121,7 +121,9 @@ void BM_Sky(benchmark::State& state, std::string technique, std::string body_nam
   std::string key = fmt::format("{}/{}/{}x{}", body_name, view.name, width, height);
   if (!raymarch_baseline().count(key)) {
     FrameRenderer baseline(width, height);
-    baseline.set_synchronous_timing(true);
+    FrameOptions options;
+    options.synchronous_timing = true;
+    baseline.set_options(options);
     baseline.set_body(body, model, make_technique("raymarch"));
     // Timed twice, the second kept: llvmpipe compiles a shader's variants
     // for the GL's state as it first meets them, and in the process's first
@@ -132,7 +134,9 @@ void BM_Sky(benchmark::State& state, std::string technique, std::string body_nam
   }
   const Timed& raymarch = raymarch_baseline()[key];
   FrameRenderer renderer(width, height);
-  renderer.set_synchronous_timing(true);
+  FrameOptions options;
+  options.synchronous_timing = true;
+  renderer.set_options(options);
   renderer.set_body(body, model, make_technique(technique));
   Timed timed;
   for (auto _ : state) {

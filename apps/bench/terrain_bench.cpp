@@ -48,6 +48,14 @@ struct PassCounter {
   std::vector<std::string> passes;
 };
 
+// Frames after the first take the tiles that are resident, as a window
+// does: the first waits for all of them.
+void set_terrain_wait(FrameRenderer& renderer, double seconds) {
+  FrameOptions options = renderer.options();
+  options.terrain_wait_s = seconds;
+  renderer.set_options(options);
+}
+
 template <class Render>
 void time_frames(benchmark::State& state, Render render, const std::vector<PassCounter>& counted) {
   std::unordered_map<std::string, double> totals;
@@ -193,8 +201,10 @@ void BM_TerrainShadowsInAir(benchmark::State& state) {
   auto context = GlContext::create_headless();
   Body body = earth();
   FrameRenderer renderer(1280, 720);
-  renderer.set_antialiasing(4);
-  renderer.set_synchronous_timing(true);
+  FrameOptions options;
+  options.antialiasing = 4;
+  options.synchronous_timing = true;
+  renderer.set_options(options);
   renderer.set_body(body, load_atmosphere(body),
                     make_technique(state.range(0) ? "hillaire" : "hillaire:terrain_shadows=off"));
   Geodesy geodesy(body.shape);
@@ -205,9 +215,9 @@ void BM_TerrainShadowsInAir(benchmark::State& state) {
   auto sun = [&] {
     return geodesy.body_direction(place, glm::radians(1.5), glm::radians(300.0 + 0.1 * turn++));
   };
-  renderer.set_terrain_wait(300.0);
+  set_terrain_wait(renderer, 300.0);
   renderer.render(camera, sun(), 10.0);  // builds the tiles, pays for shader compilation
-  renderer.set_terrain_wait(0.0);
+  set_terrain_wait(renderer, 0.0);
   time_frames(state, [&] { return renderer.render(camera, sun(), 10.0); },
               {{"terrain_shadow_ms", {"terrain_shadow"}},
                {"aerial_perspective_ms", {"aerial_perspective"}},
@@ -231,17 +241,19 @@ void BM_TerrainFrame(benchmark::State& state) {
   Body body = earth();
   AtmosphereModel model = load_atmosphere(body);
   FrameRenderer renderer(1280, 720);
-  renderer.set_antialiasing(int(state.range(1)));
-  renderer.set_terrain_shadows(state.range(2) != 0);
-  renderer.set_synchronous_timing(true);
+  FrameOptions options;
+  options.antialiasing = int(state.range(1));
+  options.synchronous_timing = true;
+  options.terrain_shadows = state.range(2) != 0;
+  renderer.set_options(options);
   renderer.set_body(body, model, make_technique("raymarch"));
   Camera camera = camera_above(body, renderer.terrain()->surface(), double(state.range(0)));
   Geodesy geodesy(body.shape);
   glm::dvec3 sun = geodesy.body_from_enu(geodesy.geodetic_from_body(camera.pos_body)) *
                    glm::normalize(glm::dvec3(0.3, -0.95, 0.14));
-  renderer.set_terrain_wait(300.0);
+  set_terrain_wait(renderer, 300.0);
   renderer.render(camera, sun, 8.0);  // builds the tiles, pays for shader compilation
-  renderer.set_terrain_wait(0.0);
+  set_terrain_wait(renderer, 0.0);
   time_frames(state, [&] { return renderer.render(camera, sun, 8.0); },
               {{"surface_ms", {"surface"}}, {"antialias_ms", {"resolve", "antialias"}}});
   state.counters["tiles_drawn"] = renderer.terrain_stats().tiles_drawn;
@@ -261,10 +273,12 @@ void BM_StarsFrame(benchmark::State& state) {
   auto context = GlContext::create_headless();
   Body body = earth();
   FrameRenderer renderer(1280, 720);
-  renderer.set_antialiasing(4);
-  renderer.set_stars(state.range(0) != 0);
-  renderer.set_auto_exposure(state.range(0) != 0);
-  renderer.set_synchronous_timing(true);
+  FrameOptions options;
+  options.antialiasing = 4;
+  options.synchronous_timing = true;
+  options.stars = state.range(0) != 0;
+  options.auto_exposure = state.range(0) != 0;
+  renderer.set_options(options);
   renderer.set_body(body, load_atmosphere(body), make_technique("hillaire"));
   Geodesy geodesy(body.shape);
   Camera camera = geodesy.camera_at({glm::radians(46.55), glm::radians(7.98), 3200.0},
@@ -272,9 +286,9 @@ void BM_StarsFrame(benchmark::State& state) {
   const UtcSeconds utc = parse_utc("2026-01-15T18:00:00Z", "bench");
   const glm::dvec3 sun = sun_dir_body(body.ephemeris, body.rotation, utc);
   renderer.set_star_orientation(body_from_icrf(body, utc));
-  renderer.set_terrain_wait(300.0);
+  set_terrain_wait(renderer, 300.0);
   renderer.render(camera, sun, 1e4);  // builds the tiles, pays for shader compilation
-  renderer.set_terrain_wait(0.0);
+  set_terrain_wait(renderer, 0.0);
   time_frames(state, [&] { return renderer.render(camera, sun, 1e4); },
               {{"stars_ms", {"stars"}}, {"exposure_ms", {"exposure"}}});
 }
@@ -294,8 +308,10 @@ void BM_EarthImageryFrame(benchmark::State& state) {
   Body body = earth();
   if (state.range(0) == 0) body.terrain.erase("maps");
   FrameRenderer renderer(1280, 720);
-  renderer.set_antialiasing(4);
-  renderer.set_synchronous_timing(true);
+  FrameOptions options;
+  options.antialiasing = 4;
+  options.synchronous_timing = true;
+  renderer.set_options(options);
   renderer.set_body(body, load_atmosphere(body), make_technique("hillaire"));
   Geodesy geodesy(body.shape);
   const Geodetic place{glm::radians(38.0), glm::radians(11.0), 400e3};
@@ -303,9 +319,9 @@ void BM_EarthImageryFrame(benchmark::State& state) {
                                     glm::radians(60.0));
   glm::dvec3 sun = geodesy.body_direction(place, glm::radians(state.range(1) ? -30.0 : 40.0),
                                           glm::radians(200.0));
-  renderer.set_terrain_wait(300.0);
+  set_terrain_wait(renderer, 300.0);
   renderer.render(camera, sun, 3.0);  // builds the tiles, pays for shader compilation
-  renderer.set_terrain_wait(0.0);
+  set_terrain_wait(renderer, 0.0);
   time_frames(state, [&] { return renderer.render(camera, sun, 3.0); },
               {{"surface_ms", {"surface"}}});
 }
@@ -348,11 +364,13 @@ void BM_PilotsWorldFrame(benchmark::State& state) {
   Body body = load_body(data_dir() / "planets" / (std::string(view.body) + ".json"));
   if (!after) body.terrain.erase("maps");
   FrameRenderer renderer(1280, 720);
-  renderer.set_antialiasing(after ? 4 : 1);
-  renderer.set_terrain_shadows(after);
-  renderer.set_stars(after);
-  renderer.set_auto_exposure(after);
-  renderer.set_synchronous_timing(true);
+  FrameOptions options;
+  options.antialiasing = after ? 4 : 1;
+  options.synchronous_timing = true;
+  options.terrain_shadows = after;
+  options.stars = after;
+  options.auto_exposure = after;
+  renderer.set_options(options);
   renderer.set_body(body, load_atmosphere(body),
                     make_technique(after ? "hillaire" : "hillaire:terrain_shadows=off"));
   Geodesy geodesy(body.shape);
@@ -366,9 +384,9 @@ void BM_PilotsWorldFrame(benchmark::State& state) {
     utc += 60.0;
     return stats;
   };
-  renderer.set_terrain_wait(300.0);
+  set_terrain_wait(renderer, 300.0);
   frame();  // builds the tiles, pays for shader compilation
-  renderer.set_terrain_wait(0.0);
+  set_terrain_wait(renderer, 0.0);
   time_frames(state, frame,
               {{"surface_ms", {"surface"}},
                {"antialias_ms", {"resolve", "antialias"}},

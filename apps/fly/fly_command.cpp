@@ -122,6 +122,7 @@ void add_fly_command(CLI::App& app) {
   cmd->add_option("--technique", args->technique, "Atmosphere technique (wins over --error-budget)")
       ->capture_default_str()
       ->each([args](const std::string&) { args->technique_given = true; });
+  add_schedule_option(*cmd);
   cmd->add_option("--error-budget", args->error_budget,
                   "Let the governor choose the technique each frame: the cheapest whose "
                   "predicted error is within PCT percent (also a HUD slider)");

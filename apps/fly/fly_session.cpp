@@ -21,6 +21,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 
 namespace planet::apps {
 
@@ -67,27 +68,33 @@ FlySession::FlySession(const FlyArgs& args, GLFWwindow* window, FlyInput& input,
   const bool software =
       std::string(reinterpret_cast<const char*>(glGetString(GL_RENDERER))).find("llvmpipe") !=
       std::string::npos;
-  renderer_->set_antialiasing(args.antialiasing > 0 ? args.antialiasing
-                              : software            ? 1
-                                                    : FlightScript().antialiasing);
-  renderer_->set_smooth_edges(args.antialiasing == 0 && software);
+  FrameOptions options;
+  options.antialiasing = args.antialiasing > 0 ? args.antialiasing
+                         : software            ? 1
+                                               : FlightScript().antialiasing;
+  options.smooth_edges = args.antialiasing == 0 && software;
   // The sun glares as it does to an eye; a capture leaves it out unless asked.
-  renderer_->set_glare(true);
-  ldr_framebuffer_ = make_framebuffer(renderer_->ldr_texture(), 0);
+  options.glare = true;
   // A window never waits for tiles: it draws parents while children load.
-  renderer_->set_terrain_wait(0.0);
-  renderer_->set_stars(true);
-  renderer_->set_auto_exposure(args.auto_exposure);
+  options.terrain_wait_s = 0.0;
+  options.stars = true;
+  options.auto_exposure = args.auto_exposure;
+  ldr_framebuffer_ = make_framebuffer(renderer_->ldr_texture(), 0);
+  std::optional<FlightScript> flight;
   if (!args.flight_file.empty()) {
-    FlightScript script = load_flight_script(args.flight_file, terrain_ground());
+    flight = load_flight_script(args.flight_file, terrain_ground());
+    options.auto_exposure = flight->auto_exposure;
+    options.stars = flight->stars;
+  }
+  renderer_->set_options(options);
+  if (flight) {
+    FlightScript script = std::move(*flight);
     technique_ = script.technique;
     if (!args.technique_given && !script.technique_named) {
       error_budget_ = args.error_budget > 0 ? args.error_budget
                                             : script.error_budget_percent.value_or(0.0);
     }
     exposure_ = script.exposure;
-    renderer_->set_auto_exposure(script.auto_exposure);
-    renderer_->set_stars(script.stars);
     load(script.body.file.string(), false);
     auto scripted = std::make_unique<ScriptedFlight>(std::move(script));
     scripted_ = scripted.get();
@@ -189,9 +196,9 @@ void FlySession::attach(const Body& body) {
     technique = make_technique(technique_);
   }
   // A new body builds a new terrain, which takes the budget now set.
-  TerrainOptions terrain;
-  terrain.pixel_budget = double(lod_pixels_);
-  renderer_->set_terrain_options(terrain);
+  FrameOptions options = renderer_->options();
+  options.terrain.pixel_budget = double(lod_pixels_);
+  renderer_->set_options(options);
   // A technique's first tables for a model (bruneton's take seconds) hold
   // the loop: their progress goes to the window's title, and the window
   // keeps answering the desktop (key presses wait in their queue).
@@ -313,8 +320,10 @@ std::string FlySession::light_up(const Geodetic& place) {
   Daylight light = daylight(elevation, body_.has_atmosphere());
   std::string text =
       fmt::format("sun {:.1f} deg: {}", glm::degrees(elevation), daylight_name(light));
-  if (light != Daylight::kDay && !renderer_->auto_exposure() && !args_.exposure_given) {
-    renderer_->set_auto_exposure(true);
+  if (light != Daylight::kDay && !renderer_->options().auto_exposure && !args_.exposure_given) {
+    FrameOptions options = renderer_->options();
+    options.auto_exposure = true;
+    renderer_->set_options(options);
     text += ", the exposure follows the scene (auto)";
   }
   return text;
@@ -426,12 +435,12 @@ HudView FlySession::hud_view(const Camera& cam, const glm::dvec3& sun, double re
   double day_start = std::floor((clock_.utc() + 43200.0) / 86400.0) * 86400.0 - 43200.0;
   v.hours_utc = (clock_.utc() - day_start) / 3600.0;
   v.time_scale = clock_.scale();
-  v.auto_exposure = renderer_->auto_exposure();
+  v.auto_exposure = renderer_->options().auto_exposure;
   v.exposure = renderer_->last_exposure();
   v.lod_pixels = lod_pixels_;
-  v.terrain_shadows = renderer_->terrain_shadows();
-  v.stars = renderer_->stars();
-  v.glare = renderer_->glare();
+  v.terrain_shadows = renderer_->options().terrain_shadows;
+  v.stars = renderer_->options().stars;
+  v.glare = renderer_->options().glare;
   return v;
 }
 
@@ -450,14 +459,18 @@ void FlySession::apply(const HudChanges& c) {
     lod_pixels_ = *c.lod_pixels;
     if (renderer_->terrain()) renderer_->terrain()->set_pixel_budget(double(lod_pixels_));
   }
-  if (c.terrain_shadows) renderer_->set_terrain_shadows(*c.terrain_shadows);
-  if (c.stars) renderer_->set_stars(*c.stars);
-  if (c.glare) renderer_->set_glare(*c.glare);
+  // Most frames change no box: the renderer's options are set only when one does.
+  if (!c.terrain_shadows && !c.stars && !c.glare && !c.auto_exposure) return;
+  FrameOptions options = renderer_->options();
+  if (c.terrain_shadows) options.terrain_shadows = *c.terrain_shadows;
+  if (c.stars) options.stars = *c.stars;
+  if (c.glare) options.glare = *c.glare;
   if (c.auto_exposure) {
     // Off: the slider starts from what the frames were shown with.
-    if (!*c.auto_exposure && renderer_->auto_exposure()) exposure_ = renderer_->last_exposure();
-    renderer_->set_auto_exposure(*c.auto_exposure);
+    if (!*c.auto_exposure && options.auto_exposure) exposure_ = renderer_->last_exposure();
+    options.auto_exposure = *c.auto_exposure;
   }
+  renderer_->set_options(options);
 }
 
 void FlySession::blit() {

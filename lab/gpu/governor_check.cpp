@@ -2,6 +2,7 @@
 
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/job.h"
 #include "lab/accuracy.h"
 #include "lab/debiased_error.h"
 #include "lab/gpu/scene_render.h"
@@ -126,87 +127,110 @@ HeldOutTruths held_out_truths(const GovernorCheckOptions& o) {
   return t;
 }
 
+namespace {
+
+// What a view's checks share: its ground truth, rendered for the first
+// choice measured, and each choice drawn once (its error, high end and the
+// truth's noise).
+struct ViewMeasures {
+  std::optional<ReferenceRender> truth;
+  std::map<std::string, std::pair<std::array<double, 2>, double>> measured;
+};
+
+GovernorCheck check_view(const ErrorModel& model, const GovernorCheckOptions& o, const View& v,
+                         double budget, ViewMeasures& m) {
+  GovernorSettings settings;
+  settings.budget_percent = budget;
+  settings.frames_per_model = o.frames_per_model;
+  Governor governor(model, settings, "hillaire");
+  Body body = scene_body(v.scene);
+  AtmosphereModel atmosphere = scene_atmosphere(v.scene, body);
+  const ViewFeatures features =
+      view_features(body, atmosphere, v.scene.camera.pos_body, v.scene.sun_dir_body);
+  // Every choice as the table has it, before any is drawn (the costs
+  // then include each one's model change, as the choice's does).
+  const std::vector<Prediction> table = governor.predict(features);
+  GovernorDecision d = governor.decide(features);
+  GovernorCheck c;
+  c.budget_percent = budget;
+  c.view = v.scene.name;
+  c.held_out = v.held_out;
+  c.choice = d.choice;
+  c.predicted_error = d.chosen.error;
+  c.cost_ms = d.chosen.cost_ms;
+  if (!m.measured.count(d.choice)) {
+    if (!m.truth) {
+      PathBudget paths = v.cell ? stability_reference_budget(*v.cell)
+                                : sweep_reference_budget(SweepOptions{}, v.scene);
+      m.truth = reference_render(v.scene, paths, ReferenceMode::kRgb);
+    }
+    ImageRGB image = render_scene_with(v.scene, d.choice);
+    auto e = debiased_error(image, m.truth->image, m.truth->noise, sun_disk_mask(v.scene));
+    double worst = 0, high = 0, noise = 0;
+    for (const DebiasedError& x : e) {
+      worst = std::max(worst, x.relative(x.debiased_rmse));
+      high = std::max(high, x.relative(x.high));
+      noise = std::max(noise, x.relative(std::sqrt(std::max(
+                                  x.rmse * x.rmse - x.debiased_rmse * x.debiased_rmse, 0.0))));
+    }
+    m.measured[d.choice] = {{worst, high}, noise};
+  }
+  c.measured_error = m.measured[d.choice].first[0];
+  c.measured_high = m.measured[d.choice].first[1];
+  c.reference_noise = m.measured[d.choice].second;
+  if (!v.held_out) {
+    // The exhaustive table's cheapest within budget, by the same cost.
+    for (const Prediction& p : table) {
+      if (p.error <= budget / 100.0) {
+        c.cheapest = p.choice;
+        c.cheapest_cost_ms = p.cost_ms;
+        break;
+      }
+    }
+  }
+  return c;
+}
+
+}  // namespace
+
 std::vector<GovernorCheck> run_governor_check(
     const GovernorCheckOptions& o,
     const std::function<void(int, int, const std::string&)>& progress) {
   const ErrorModel model = load_model(o);
   const std::vector<View> all = views(o, model);
-  const int total = int(all.size() * o.budgets.size());
-  int done = 0;
-  std::vector<GovernorCheck> checks;
+  // A check per (view, budget), kept in OUT/views/<budget>/<view>.json; a
+  // view's checks share its ground truth and draws.
+  std::vector<JobCell> plan;
   for (const View& v : all) {
-    // The ground truth once per view, and each choice drawn once.
-    std::optional<ReferenceRender> truth;
-    std::map<std::string, std::pair<std::array<double, 2>, double>> measured;
     for (double budget : o.budgets) {
-      std::filesystem::path file = o.out / "views" / fmt::format("{:g}", budget) /
-                                   (v.scene.name + ".json");
-      if (progress) progress(done++, total, fmt::format("{} at {:g} %", v.scene.name, budget));
-      if (!o.redo && std::filesystem::exists(file)) {
-        std::ifstream in(file);
-        try {
-          checks.push_back(check_from_json(nlohmann::json::parse(in)));
-          continue;
-        } catch (const std::exception&) {
-          // Not whole: measured again.
-        }
-      }
-      GovernorSettings settings;
-      settings.budget_percent = budget;
-      settings.frames_per_model = o.frames_per_model;
-      Governor governor(model, settings, "hillaire");
-      Body body = scene_body(v.scene);
-      AtmosphereModel atmosphere = scene_atmosphere(v.scene, body);
-      const ViewFeatures features =
-          view_features(body, atmosphere, v.scene.camera.pos_body, v.scene.sun_dir_body);
-      // Every choice as the table has it, before any is drawn (the costs
-      // then include each one's model change, as the choice's does).
-      const std::vector<Prediction> table = governor.predict(features);
-      GovernorDecision d = governor.decide(features);
-      GovernorCheck c;
-      c.budget_percent = budget;
-      c.view = v.scene.name;
-      c.held_out = v.held_out;
-      c.choice = d.choice;
-      c.predicted_error = d.chosen.error;
-      c.cost_ms = d.chosen.cost_ms;
-      if (!measured.count(d.choice)) {
-        if (!truth) {
-          PathBudget paths = v.cell ? stability_reference_budget(*v.cell)
-                                    : sweep_reference_budget(SweepOptions{}, v.scene);
-          truth = reference_render(v.scene, paths, ReferenceMode::kRgb);
-        }
-        ImageRGB image = render_scene_with(v.scene, d.choice);
-        auto e = debiased_error(image, truth->image, truth->noise, sun_disk_mask(v.scene));
-        double worst = 0, high = 0, noise = 0;
-        for (const DebiasedError& x : e) {
-          worst = std::max(worst, x.relative(x.debiased_rmse));
-          high = std::max(high, x.relative(x.high));
-          noise = std::max(noise, x.relative(std::sqrt(std::max(x.rmse * x.rmse -
-                                                                    x.debiased_rmse * x.debiased_rmse,
-                                                                0.0))));
-        }
-        measured[d.choice] = {{worst, high}, noise};
-      }
-      c.measured_error = measured[d.choice].first[0];
-      c.measured_high = measured[d.choice].first[1];
-      c.reference_noise = measured[d.choice].second;
-      if (!v.held_out) {
-        // The exhaustive table's cheapest within budget, by the same cost.
-        for (const Prediction& p : table) {
-          if (p.error <= budget / 100.0) {
-            c.cheapest = p.choice;
-            c.cheapest_cost_ms = p.cost_ms;
-            break;
-          }
-        }
-      }
-      std::filesystem::create_directories(file.parent_path());
-      write_file_atomically(file, check_to_json(c).dump(2) + "\n");
-      checks.push_back(c);
+      plan.push_back({fmt::format("views/{:g}/{}.json", budget, v.scene.name),
+                      fmt::format("{} at {:g} %", v.scene.name, budget), v.scene.name,
+                      plan.size()});
     }
   }
-  if (progress) progress(total, total, "");
+  JobOptions options;
+  options.redo = o.redo;
+  const Job job(o.out, plan, options);
+  std::vector<GovernorCheck> checks;
+  ViewMeasures measures;
+  JobSteps steps;
+  steps.progress = progress;
+  steps.keep = [&](const JobCell&, const std::filesystem::path& file) {
+    std::ifstream in(file);
+    try {
+      checks.push_back(check_from_json(nlohmann::json::parse(in)));
+      return true;
+    } catch (const std::exception&) {
+      return false;  // not whole: measured again
+    }
+  };
+  steps.prepare = [&](const JobCell&) { measures = {}; };
+  steps.run = [&](const JobCell& cell) {
+    const View& v = all[cell.index / o.budgets.size()];
+    checks.push_back(check_view(model, o, v, o.budgets[cell.index % o.budgets.size()], measures));
+    return check_to_json(checks.back()).dump(2) + "\n";
+  };
+  job.run(steps);
   return checks;
 }
 

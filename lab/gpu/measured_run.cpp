@@ -3,6 +3,7 @@
 #include "atmosphere/gpu/registry.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/job.h"
 #include "lab/gpu/measured_render.h"
 #include "sim/body.h"
 
@@ -134,80 +135,96 @@ MeasuredPlan plan_measured(const MeasuredOptions& o) {
   return plan;
 }
 
-std::vector<MeasuredRow> run_measured(const MeasuredOptions& o, const MeasuredPlan& plan,
-                                      const std::function<void(const std::string&, int, int)>&
-                                          on_progress) {
-  Body body = scene_body(plan.views.front().scene);
-  AtmosphereModel model = scene_atmosphere(plan.views.front().scene, body);
-  const std::vector<double>& wavelengths = model.spectrum->wavelengths_nm;
-  std::vector<MeasuredRow> rows;
-  nlohmann::json captures = nlohmann::json::array();
+namespace {
 
-  // The ground truth, capture by capture (kept as each one ends).
-  std::vector<SkySpectra> truth;
-  int directions = int(plan.captures.front().directions.size());
-  int total = directions * int(plan.captures.size());
+using MeasuredProgress = std::function<void(const std::string&, int, int)>;
+
+// The ground truth as a job, a cell per capture (measured_comparison.h's
+// ground_truth_cell), kept in OUT/ground_truth as each one ends.
+std::vector<SkySpectra> ground_truths(const MeasuredOptions& o, const MeasuredPlan& plan,
+                                      const AtmosphereModel& model,
+                                      const MeasuredProgress& on_progress) {
+  std::vector<JobCell> cells;
+  std::vector<GroundTruthCell> keys;
   for (size_t c = 0; c < plan.captures.size(); ++c) {
-    truth.push_back(cached_ground_truth_spectra(
-        model, plan.views[c], plan.captures[c], o.paths, o.out / "ground_truth", [&](int done) {
-          if (on_progress) on_progress("ground truth", int(c) * directions + done, total);
-        }));
-    rows.push_back({"ground_truth", plan.captures[c].local,
-                    score_against(plan.captures[c], truth.back(), wavelengths,
-                                  plan.views[c].sun_elevation_deg, plan.views[c].sun_azimuth_deg)});
+    keys.push_back(ground_truth_cell(model, plan.views[c], plan.captures[c], o.paths));
+    cells.push_back({keys.back().file, plan.captures[c].local, "", c});
   }
-
-  std::map<std::string, std::vector<SkySpectra>> by_technique;
-  for (const std::string& t : plan.techniques) {
-    by_technique[t] = technique_spectra(t, plan.views, [&](int done, int triples) {
-      if (on_progress) on_progress(t, done, triples);
-    });
-    for (size_t c = 0; c < plan.captures.size(); ++c) {
-      rows.push_back({t, plan.captures[c].local,
-                      score_against(plan.captures[c], by_technique[t][c], wavelengths,
-                                    plan.views[c].sun_elevation_deg,
-                                    plan.views[c].sun_azimuth_deg)});
-    }
-  }
-
-  auto score_json = [](const MeasuredScore& s) {
-    return nlohmann::json{{"rmse", s.rmse},
-                          {"debiased_rmse", s.debiased_rmse},
-                          {"zenith_luminance", s.zenith_luminance},
-                          {"measured_zenith_luminance", s.measured_zenith_luminance},
-                          {"mean_measured", s.mean_measured},
-                          {"rmse_away_from_sun", s.rmse_away_from_sun},
-                          {"near_sun_share", s.near_sun_share}};
+  const int directions = int(plan.captures.front().directions.size());
+  const int total = directions * int(plan.captures.size());
+  std::vector<SkySpectra> truth(plan.captures.size());
+  JobSteps steps;
+  steps.keep = [&](const JobCell& cell, const std::filesystem::path& file) {
+    std::optional<SkySpectra> kept = read_ground_truth(file, keys[cell.index].key);
+    if (!kept) return false;
+    truth[cell.index] = *kept;
+    if (on_progress) on_progress("ground truth", int(cell.index + 1) * directions, total);
+    return true;
   };
+  steps.run = [&](const JobCell& cell) {
+    const size_t c = cell.index;
+    truth[c] = ground_truth_spectra(model, plan.views[c], o.paths, [&](int done) {
+      if (on_progress) on_progress("ground truth", int(c) * directions + done, total);
+    });
+    return ground_truth_json(keys[c], plan.captures[c], o.paths, model.spectrum->wavelengths_nm,
+                             truth[c]);
+  };
+  Job(o.out / "ground_truth", cells).run(steps);
+  return truth;
+}
+
+nlohmann::json score_json(const MeasuredScore& s) {
+  return nlohmann::json{{"rmse", s.rmse},
+                        {"debiased_rmse", s.debiased_rmse},
+                        {"zenith_luminance", s.zenith_luminance},
+                        {"measured_zenith_luminance", s.measured_zenith_luminance},
+                        {"mean_measured", s.mean_measured},
+                        {"rmse_away_from_sun", s.rmse_away_from_sun},
+                        {"near_sun_share", s.near_sun_share}};
+}
+
+// A capture's entry in measured.json: its sun, directions, measurements,
+// and each source's radiance and score.
+nlohmann::json capture_json(const MeasuredCapture& cap, const MeasuredView& view,
+                            const std::vector<double>& wavelengths, const SkySpectra& truth,
+                            const std::map<std::string, SkySpectra>& by_technique,
+                            const std::vector<MeasuredRow>& rows) {
+  nlohmann::json j;
+  j["local"] = cap.local;
+  j["utc"] = cap.utc;
+  j["sun"] = {{"elevation_deg", view.sun_elevation_deg},
+              {"azimuth_deg", view.sun_azimuth_deg},
+              {"symmetry_azimuth_deg", view.symmetry_azimuth_deg},
+              {"azimuth_turn_deg", view.azimuth_turn_deg}};
+  nlohmann::json dirs = nlohmann::json::array(), measured = nlohmann::json::array();
+  for (const MeasuredDirection& d : cap.directions) {
+    dirs.push_back(
+        {{"index", d.index}, {"azimuth_deg", d.azimuth_deg}, {"elevation_deg", d.elevation_deg}});
+    std::vector<double> bands;
+    for (double l : wavelengths) bands.push_back(cap.band_radiance(d, l));
+    measured.push_back(bands);
+  }
+  j["directions"] = dirs;
+  j["measured"] = measured;
+  j["sources"]["ground_truth"] = {{"radiance", truth.radiance}, {"std_error", truth.std_error}};
+  for (const auto& [t, spectra] : by_technique) j["sources"][t] = {{"radiance", spectra.radiance}};
+  for (const MeasuredRow& r : rows) {
+    if (r.capture == cap.local) j["sources"][r.source]["score"] = score_json(r.score);
+  }
+  return j;
+}
+
+void write_measured_tables(const MeasuredOptions& o, const MeasuredPlan& plan,
+                           const std::vector<double>& wavelengths,
+                           const std::vector<SkySpectra>& truth,
+                           const std::map<std::string, std::vector<SkySpectra>>& by_technique,
+                           const std::vector<MeasuredRow>& rows) {
+  nlohmann::json captures = nlohmann::json::array();
   for (size_t c = 0; c < plan.captures.size(); ++c) {
-    const MeasuredCapture& cap = plan.captures[c];
-    const MeasuredView& view = plan.views[c];
-    nlohmann::json j;
-    j["local"] = cap.local;
-    j["utc"] = cap.utc;
-    j["sun"] = {{"elevation_deg", view.sun_elevation_deg},
-                {"azimuth_deg", view.sun_azimuth_deg},
-                {"symmetry_azimuth_deg", view.symmetry_azimuth_deg},
-                {"azimuth_turn_deg", view.azimuth_turn_deg}};
-    nlohmann::json dirs = nlohmann::json::array(), measured = nlohmann::json::array();
-    for (const MeasuredDirection& d : cap.directions) {
-      dirs.push_back({{"index", d.index}, {"azimuth_deg", d.azimuth_deg},
-                      {"elevation_deg", d.elevation_deg}});
-      std::vector<double> bands;
-      for (double l : wavelengths) bands.push_back(cap.band_radiance(d, l));
-      measured.push_back(bands);
-    }
-    j["directions"] = dirs;
-    j["measured"] = measured;
-    j["sources"]["ground_truth"] = {{"radiance", truth[c].radiance},
-                                    {"std_error", truth[c].std_error}};
-    for (const auto& [t, spectra] : by_technique) {
-      j["sources"][t] = {{"radiance", spectra[c].radiance}};
-    }
-    for (const MeasuredRow& r : rows) {
-      if (r.capture == cap.local) j["sources"][r.source]["score"] = score_json(r.score);
-    }
-    captures.push_back(j);
+    std::map<std::string, SkySpectra> techniques;
+    for (const auto& [t, spectra] : by_technique) techniques[t] = spectra[c];
+    captures.push_back(
+        capture_json(plan.captures[c], plan.views[c], wavelengths, truth[c], techniques, rows));
   }
   nlohmann::json totals;
   std::vector<std::string> sources = {"ground_truth"};
@@ -246,6 +263,34 @@ std::vector<MeasuredRow> run_measured(const MeasuredOptions& o, const MeasuredPl
                        r.score.near_sun_share);
   }
   write_file_atomically(o.out / "measured.csv", csv);
+}
+
+}  // namespace
+
+std::vector<MeasuredRow> run_measured(const MeasuredOptions& o, const MeasuredPlan& plan,
+                                      const MeasuredProgress& on_progress) {
+  Body body = scene_body(plan.views.front().scene);
+  AtmosphereModel model = scene_atmosphere(plan.views.front().scene, body);
+  const std::vector<double>& wavelengths = model.spectrum->wavelengths_nm;
+  auto score = [&](size_t c, const SkySpectra& spectra) {
+    return score_against(plan.captures[c], spectra, wavelengths, plan.views[c].sun_elevation_deg,
+                         plan.views[c].sun_azimuth_deg);
+  };
+  std::vector<MeasuredRow> rows;
+  std::vector<SkySpectra> truth = ground_truths(o, plan, model, on_progress);
+  for (size_t c = 0; c < plan.captures.size(); ++c) {
+    rows.push_back({"ground_truth", plan.captures[c].local, score(c, truth[c])});
+  }
+  std::map<std::string, std::vector<SkySpectra>> by_technique;
+  for (const std::string& t : plan.techniques) {
+    by_technique[t] = technique_spectra(t, plan.views, [&](int done, int triples) {
+      if (on_progress) on_progress(t, done, triples);
+    });
+    for (size_t c = 0; c < plan.captures.size(); ++c) {
+      rows.push_back({t, plan.captures[c].local, score(c, by_technique[t][c])});
+    }
+  }
+  write_measured_tables(o, plan, wavelengths, truth, by_technique, rows);
   return rows;
 }
 

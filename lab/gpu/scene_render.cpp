@@ -11,7 +11,9 @@ ImageRGB render(const Scene& scene, const std::string& technique, bool sky_light
   Body body = scene_body(scene);
   AtmosphereModel model = scene_atmosphere(scene, body);
   FrameRenderer renderer(scene.width, scene.height);
-  renderer.set_surface_sky_light(sky_light);
+  FrameOptions options;
+  options.surface_sky_light = sky_light;
+  renderer.set_options(options);
   renderer.set_body(body, model, make_technique(technique));
   renderer.render(scene.camera, scene.sun_dir_body, scene.exposure);
   return image_from_gl(scene.width, scene.height, renderer.read_hdr());

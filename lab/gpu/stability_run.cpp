@@ -3,6 +3,7 @@
 #include "atmosphere/gpu/registry.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
+#include "core/job.h"
 #include "core/tone_map.h"
 #include "lab/accuracy.h"
 #include "lab/gpu/scene_render.h"
@@ -85,46 +86,48 @@ StabilityResult run_point(const StabilityCell& cell, const std::string& techniqu
 
 }  // namespace
 
+Job stability_job(const StabilityOptions& o, const std::vector<StabilityCell>& cells) {
+  const auto points = stability_points(o.techniques);
+  std::vector<JobCell> plan;
+  for (const StabilityCell& cell : cells) {
+    for (const auto& [technique, quality] : points) {
+      plan.push_back({fmt::format("cells/{}/{}-{}.json", cell.scene.name, technique, quality),
+                      fmt::format("{} {}:{}", cell.scene.name, technique, quality), cell.scene.name,
+                      plan.size()});
+    }
+  }
+  JobOptions options;
+  options.redo = o.redo;
+  return Job(o.out, plan, options);
+}
+
 std::vector<StabilityResult> run_stability(
     const StabilityOptions& o, const std::vector<StabilityCell>& cells,
     const std::function<void(int, int, const std::string&)>& progress) {
-  auto points = stability_points(o.techniques);
-  const int total = int(cells.size() * points.size());
-  int done = 0;
-  for (const StabilityCell& cell : cells) {
-    // A draw whose file is there is kept; the files are read once, below.
-    std::vector<bool> kept;
-    bool all_kept = true;
-    for (const auto& [technique, quality] : points) {
-      kept.push_back(!o.redo && std::filesystem::exists(
-                                    stability_result_file(o, cell.scene.name, technique, quality)));
-      all_kept = all_kept && kept.back();
-    }
-    if (all_kept) {
-      done += int(points.size());
-      continue;
-    }
-    if (progress) progress(done, total, cell.scene.name + ": its ground truth");
+  const auto points = stability_points(o.techniques);
+  const Job job = stability_job(o, cells);
+  auto cell_of = [&](const JobCell& c) -> const StabilityCell& {
+    return cells[c.index / points.size()];
+  };
+  std::optional<ReferenceRender> truth;
+  JobSteps steps;
+  steps.progress = progress;
+  steps.prepare = [&](const JobCell& c) {
+    const StabilityCell& cell = cell_of(c);
     std::filesystem::path dir = o.out / "cells" / cell.scene.name;
     std::filesystem::create_directories(dir);
     // Inside the planet there is none: the tracer's medium ends at the ground.
-    std::optional<ReferenceRender> truth;
+    truth.reset();
     if (cell.point.altitude_m >= 0) {
       truth = reference_render(cell.scene, stability_reference_budget(cell));
       write_tone_mapped_png(dir / "reference.png", enlarged(truth->image), cell.scene.exposure);
     }
-    for (size_t i = 0; i < points.size(); ++i) {
-      const auto& [technique, quality] = points[i];
-      if (progress) progress(done, total, fmt::format("{} {}:{}", cell.scene.name, technique, quality));
-      if (!kept[i]) {
-        StabilityResult r = run_point(cell, technique, quality, truth, o);
-        write_file_atomically(stability_result_file(o, cell.scene.name, technique, quality),
-                              result_to_json(r).dump(2) + "\n");
-      }
-      ++done;
-    }
-  }
-  if (progress) progress(done, total, "");
+  };
+  steps.run = [&](const JobCell& c) {
+    const auto& [technique, quality] = points[c.index % points.size()];
+    return result_to_json(run_point(cell_of(c), technique, quality, truth, o)).dump(2) + "\n";
+  };
+  job.run(steps);
 
   // Every shard's results that are there, in the plan's order.
   std::vector<StabilityResult> results;

@@ -4,6 +4,7 @@
 #include "core/atomic_file.h"
 #include "core/data_paths.h"
 #include "core/error.h"
+#include "core/job.h"
 #include "core/tone_map.h"
 #include "core/version.h"
 #include "gl/texture.h"
@@ -34,11 +35,6 @@ namespace {
 
 std::string cell_name(const std::string& technique, const std::string& quality) {
   return technique + "-" + quality;
-}
-
-std::filesystem::path cell_file(const SweepOptions& o, const std::string& scene,
-                                const std::string& technique, const std::string& quality) {
-  return o.out / "cells" / scene / (cell_name(technique, quality) + ".json");
 }
 
 // The choice a quality point makes: "name" or "name:key=value,...".
@@ -83,7 +79,9 @@ void time_cell(const Scene& scene, const std::string& choice, int frames, SweepC
   Body body = scene_body(scene);
   AtmosphereModel model = scene_atmosphere(scene, body);
   FrameRenderer renderer(scene.width, scene.height);
-  renderer.set_synchronous_timing(true);
+  FrameOptions options;
+  options.synchronous_timing = true;
+  renderer.set_options(options);
   renderer.set_body(body, model, make_technique(choice));
   renderer.render(scene.camera, scene.sun_dir_body, scene.exposure);  // warm-up
   std::vector<double> walls, gpus;
@@ -292,8 +290,8 @@ nlohmann::json cell_to_json(const SweepCell& c) {
           {"time_ties", c.time_ties}};
 }
 
-SweepCell cell_from_json(const nlohmann::json& j, const std::string& file) {
-  try {
+SweepCell cell_from_json(const nlohmann::json& json, const std::string& file) {
+  return read_job_json(json, file, "planet lab run", [](const nlohmann::json& j) {
     SweepCell c;
     c.scene = j.at("scene").get<std::string>();
     c.technique = j.at("technique").get<std::string>();
@@ -316,24 +314,11 @@ SweepCell cell_from_json(const nlohmann::json& j, const std::string& file) {
       c.split = true;
     }
     return c;
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(fmt::format("{}: not a cell of planet lab run ({}); delete it or run with "
-                                 "--redo",
-                                 file, e.what()));
-  }
+  });
 }
 
 SweepCell read_sweep_cell(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  nlohmann::json j;
-  try {
-    in >> j;
-  } catch (const nlohmann::json::exception& e) {
-    throw InputError(fmt::format("{}: not a cell of planet lab run ({}); delete it or run "
-                                 "with --redo",
-                                 file.string(), e.what()));
-  }
-  return cell_from_json(j, file.string());
+  return cell_from_json(read_job_file(file, "planet lab run"), file.string());
 }
 
 std::vector<ProgressPart> sweep_cell_costs(const SweepOptions& o, const SweepPlan& plan) {
@@ -366,7 +351,7 @@ std::vector<ProgressPart> sweep_cell_costs(const SweepOptions& o, const SweepPla
   // tables taking the rest at the table's times, slowed by other work).
   constexpr double kCellFixedMs = 1000;
   std::vector<ProgressPart> parts;
-  for (const Scene& scene : plan.scenes) {
+  for (size_t s = 0; s < plan.scenes.size(); ++s) {
     for (const auto& [technique, quality] : plan.points) {
       std::string choice = governor_choice(technique, quality);
       double prior = 1;
@@ -379,71 +364,91 @@ std::vector<ProgressPart> sweep_cell_costs(const SweepOptions& o, const SweepPla
         // technique and of its single scattering.
         prior = kCellFixedMs + (o.frames + 1) * frame_ms * pixels_ratio + 2 * change_ms;
       }
-      if (!o.redo && std::filesystem::exists(cell_file(o, scene.name, technique, quality))) {
-        prior = 0;
-      }
       parts.push_back({choice, prior});
     }
   }
-  return parts;
+  return sweep_job(o, plan).parts(parts);
 }
 
-std::vector<SweepCell> run_sweep(const SweepOptions& o, const SweepPlan& plan,
-                                 const std::function<void(int, int, const std::string&)>& progress) {
-  const int total = int(plan.scenes.size() * plan.points.size());
-  remove_stale_partials(o.out);
-  int done = 0;
-  std::vector<SweepCell> cells;
+Job sweep_job(const SweepOptions& o, const SweepPlan& plan) {
+  std::vector<JobCell> cells;
   for (const Scene& scene : plan.scenes) {
+    for (const auto& [technique, quality] : plan.points) {
+      cells.push_back({fmt::format("cells/{}/{}.json", scene.name, cell_name(technique, quality)),
+                       fmt::format("{} {}:{}", scene.name, technique, quality), scene.name,
+                       cells.size()});
+    }
+  }
+  JobOptions options;
+  options.redo = o.redo;
+  return Job(o.out, cells, options);
+}
+
+namespace {
+
+// Runs the cells not yet done and reads the others back, in the plan's order.
+std::vector<SweepCell> sweep_cells(
+    const SweepOptions& o, const SweepPlan& plan,
+    const std::function<void(int, int, const std::string&)>& progress) {
+  const Job job = sweep_job(o, plan);
+  std::vector<SweepCell> cells;
+  SceneTruth truth;
+  auto scene_of = [&](size_t index) -> const Scene& {
+    return plan.scenes[index / plan.points.size()];
+  };
+  JobSteps steps;
+  steps.progress = progress;
+  steps.prepare = [&](const JobCell& cell) {
     // The ground truth once per scene: the best cached or shipped, else
     // rendered (the command has said what that costs).
+    const Scene& scene = scene_of(cell.index);
     ReferenceRender reference =
         reference_render(scene, sweep_reference_budget(o, scene), ReferenceMode::kRgb);
     Scene first = first_order_scene(scene);
     ReferenceRender first_order =
         reference_render(first, sweep_reference_budget(o, first), ReferenceMode::kRgb);
-    SceneTruth truth{reference.image,
-                     reference.noise,
-                     first_order.image,
-                     first_order.noise,
-                     difference(reference.image, first_order.image),
-                     combined_noise(reference.noise, first_order.noise),
-                     sun_disk_mask(scene),
-                     {}};
-    truth.reference_rgb8 = tone_mapped_rgb8(truth.image, scene.exposure);
+    truth = {reference.image,
+             reference.noise,
+             first_order.image,
+             first_order.noise,
+             difference(reference.image, first_order.image),
+             combined_noise(reference.noise, first_order.noise),
+             sun_disk_mask(scene),
+             tone_mapped_rgb8(reference.image, scene.exposure)};
     std::filesystem::path dir = o.out / "cells" / scene.name;
     std::filesystem::create_directories(dir);
-    remove_stale_partials(dir);  // what a sweep killed while writing left
     write_tone_mapped_png(dir / "reference.png", enlarged(truth.image), scene.exposure);
-    for (const auto& [technique, quality] : plan.points) {
-      std::filesystem::path file = cell_file(o, scene.name, technique, quality);
-      std::string label = fmt::format("{} {}:{}", scene.name, technique, quality);
-      if (progress) progress(done, total, label);
-      SweepCell cell;
-      if (!o.redo && std::filesystem::exists(file)) {
-        cell = read_sweep_cell(file);
-        cell.kept = true;
-      } else {
-        cell.scene = scene.name;
-        cell.technique = technique;
-        cell.quality = quality;
-        cell.choice = choice_of(technique, quality);
-        time_cell(at_size(scene, o.time_width, o.time_height), cell.choice, o.frames, cell);
-        measure_cell(scene, cell.choice, truth, dir / cell_name(technique, quality), cell);
-        // Whole or not at all: a killed sweep never leaves half a cell.
-        write_file_atomically(file, cell_to_json(cell).dump(2) + "\n");
-      }
-      cells.push_back(cell);
-      ++done;
-    }
-  }
-  if (progress) progress(done, total, "");
-
-  // The fronts: per scene, and over the scenes' geometric means; points
-  // within each other's noise tie (pareto.h).
-  auto point_name = [](const std::string& technique, const std::string& quality) {
-    return technique + ":" + quality;
   };
+  steps.keep = [&](const JobCell&, const std::filesystem::path& file) {
+    cells.push_back(read_sweep_cell(file));
+    cells.back().kept = true;
+    return true;
+  };
+  steps.run = [&](const JobCell& job_cell) {
+    size_t index = job_cell.index;
+    const Scene& scene = scene_of(index);
+    const auto& [technique, quality] = plan.points[index % plan.points.size()];
+    SweepCell cell;
+    cell.scene = scene.name;
+    cell.technique = technique;
+    cell.quality = quality;
+    cell.choice = choice_of(technique, quality);
+    time_cell(at_size(scene, o.time_width, o.time_height), cell.choice, o.frames, cell);
+    measure_cell(scene, cell.choice, truth,
+                 o.out / "cells" / scene.name / cell_name(technique, quality), cell);
+    cells.push_back(cell);
+    return cell_to_json(cell).dump(2) + "\n";
+  };
+  job.run(steps);
+  return cells;
+}
+
+std::string point_name(const std::string& technique, const std::string& quality) {
+  return technique + ":" + quality;
+}
+
+// The fronts per scene; points within each other's noise tie (pareto.h).
+void mark_scene_fronts(std::vector<SweepCell>& cells) {
   std::map<std::string, std::vector<size_t>> by_scene;
   for (size_t i = 0; i < cells.size(); ++i) by_scene[cells[i].scene].push_back(i);
   for (auto& [scene, indices] : by_scene) {
@@ -461,6 +466,10 @@ std::vector<SweepCell> run_sweep(const SweepOptions& o, const SweepPlan& plan,
       }
     }
   }
+}
+
+// The front over the scenes' geometric means, a point each.
+nlohmann::json overall_front(const SweepPlan& plan, const std::vector<SweepCell>& cells) {
   nlohmann::json overall = nlohmann::json::array();
   std::vector<CostError> overall_points;
   for (const auto& [technique, quality] : plan.points) {
@@ -498,7 +507,39 @@ std::vector<SweepCell> run_sweep(const SweepOptions& o, const SweepPlan& plan,
     }
     overall[i]["time_ties"] = ties;
   }
+  return overall;
+}
 
+std::string sweep_csv(const std::vector<SweepCell>& cells) {
+  std::string csv =
+      "scene,technique,quality,choice,wall_ms,wall_spread_ms,gpu_ms,rel_rmse_r,rel_rmse_g,"
+      "rel_rmse_b,debiased_r,debiased_g,debiased_b,debiased_low_r,debiased_low_g,debiased_low_b,"
+      "debiased_high_r,debiased_high_g,debiased_high_b,worst_pixel,ciede2000,error,on_front,"
+      "single_r,single_g,single_b,higher_r,higher_g,higher_b,time_ties\n";
+  for (const SweepCell& c : cells) {
+    csv += fmt::format("{},{},{},\"{}\",{:.4f},{:.4f},{:.4f}", c.scene, c.technique, c.quality,
+                       c.choice, c.wall_ms, c.wall_spread_ms, c.gpu_ms);
+    for (const auto* v : {&c.relative_rmse, &c.debiased, &c.debiased_low, &c.debiased_high}) {
+      for (double x : *v) csv += fmt::format(",{:.6f}", x);
+    }
+    csv += fmt::format(",{:.6f},{:.4f},{:.6f},{}", c.worst_pixel, c.ciede2000, c.error(),
+                       c.on_front ? 1 : 0);
+    for (const auto* v : {&c.single_error, &c.higher_error}) {
+      for (double x : *v) csv += c.split ? fmt::format(",{:.6f}", x) : std::string(",");
+    }
+    csv += fmt::format(",\"{}\"\n", fmt::join(c.time_ties, ";"));
+  }
+  return csv;
+}
+
+}  // namespace
+
+std::vector<SweepCell> run_sweep(
+    const SweepOptions& o, const SweepPlan& plan,
+    const std::function<void(int, int, const std::string&)>& progress) {
+  std::vector<SweepCell> cells = sweep_cells(o, plan, progress);
+  mark_scene_fronts(cells);
+  nlohmann::json overall = overall_front(plan, cells);
   nlohmann::json results = {
       {"planet", planet_version()},
       {"commit", source_commit()},
@@ -521,25 +562,7 @@ std::vector<SweepCell> run_sweep(const SweepOptions& o, const SweepPlan& plan,
   for (const SweepCell& c : cells) results["cells"].push_back(cell_to_json(c));
   write_file_atomically(o.out / "results.json", results.dump(2) + "\n");
 
-  std::string csv =
-      "scene,technique,quality,choice,wall_ms,wall_spread_ms,gpu_ms,rel_rmse_r,rel_rmse_g,"
-      "rel_rmse_b,debiased_r,debiased_g,debiased_b,debiased_low_r,debiased_low_g,debiased_low_b,"
-      "debiased_high_r,debiased_high_g,debiased_high_b,worst_pixel,ciede2000,error,on_front,"
-      "single_r,single_g,single_b,higher_r,higher_g,higher_b,time_ties\n";
-  for (const SweepCell& c : cells) {
-    csv += fmt::format("{},{},{},\"{}\",{:.4f},{:.4f},{:.4f}", c.scene, c.technique, c.quality,
-                       c.choice, c.wall_ms, c.wall_spread_ms, c.gpu_ms);
-    for (const auto* v : {&c.relative_rmse, &c.debiased, &c.debiased_low, &c.debiased_high}) {
-      for (double x : *v) csv += fmt::format(",{:.6f}", x);
-    }
-    csv += fmt::format(",{:.6f},{:.4f},{:.6f},{}", c.worst_pixel, c.ciede2000, c.error(),
-                       c.on_front ? 1 : 0);
-    for (const auto* v : {&c.single_error, &c.higher_error}) {
-      for (double x : *v) csv += c.split ? fmt::format(",{:.6f}", x) : std::string(",");
-    }
-    csv += fmt::format(",\"{}\"\n", fmt::join(c.time_ties, ";"));
-  }
-  write_file_atomically(o.out / "results.csv", csv);
+  write_file_atomically(o.out / "results.csv", sweep_csv(cells));
   return cells;
 }
 

@@ -7,6 +7,7 @@
 // finish, so that a sweep stopped part-way goes on where it stopped; the
 // fronts and tables are made from whatever cells are there.
 #include <nlohmann/json.hpp>
+#include "core/job.h"
 #include "core/progress.h"
 #include "lab/scene.h"
 
@@ -68,6 +69,11 @@ struct SweepPlan {
 
 // Checks every name and the output folder (InputError) before any work.
 SweepPlan plan_sweep(const SweepOptions& options);
+
+// The sweep as a job (core/job.h): a cell per (scene, point) in the plan's
+// order, each kept in OUT/cells/<scene>/<technique>-<quality>.json, the
+// scene's cells a group that shares its ground truth.
+Job sweep_job(const SweepOptions& options, const SweepPlan& plan);
 
 // The bytes of disk-cached tables the sweep makes and reads again (each
 // point's and its first order's, per distinct model of its scenes): what

@@ -1,4 +1,4 @@
-// The glare's pyramid, down (frame.cpp's draw_glare): each level the one
+// The glare's pyramid, down (render/glare.cpp): each level the one
 // above at half its size, each texel the mean of a 4x4 block above it (four
 // bilinear taps): every level keeps the image's energy.
 in vec2 v_ndc;

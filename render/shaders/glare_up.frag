@@ -1,4 +1,4 @@
-// The glare's pyramid, up (frame.cpp's draw_glare): this level's own image
+// The glare's pyramid, up (render/glare.cpp): this level's own image
 // plus the sum of the coarser levels, spread by a 3x3 tent (each coarser
 // level is then one octave wider than the one above it).
 in vec2 v_ndc;

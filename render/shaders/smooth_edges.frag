@@ -2,7 +2,7 @@
 // direction, found from the luma of the four diagonal neighbours. For a
 // window whose surfaces cannot take multisampling (llvmpipe shades each of
 // its samples: the surfaces' pass costs 4.5 times as much); a capture
-// multisamples instead (frame.h's set_antialiasing).
+// multisamples instead (frame.h's FrameOptions::antialiasing).
 in vec2 v_ndc;
 layout(location = 0) out vec4 o_color;
 layout(binding = 0) uniform sampler2D u_ldr;

@@ -16,7 +16,7 @@ layout(std430, binding = 3) readonly buffer ExposureBlock {
 };
 // 1: the target already holds display values (a technique's own mapping).
 uniform int u_display_values;
-// The glare (frame.cpp's draw_glare): the sum of its levels, each one
+// The glare (render/glare.cpp): the sum of its levels, each one
 // octave of the eye's scattered light, and the share of the light each
 // takes; 0: no glare.
 layout(binding = 1) uniform sampler2D u_glare;

@@ -120,7 +120,9 @@ TEST(LiftedHorizonGLTest, NoLineWhereTheGroundMeetsTheAirOverTheLowestGround) {
     const double mu_horizon = -std::sqrt(1.0 - std::pow(model.bottom_radius / r_lifted, 2));
     // One renderer for the place, so that its tiles load once.
     FrameRenderer renderer(kWidth, kHeight);
-    renderer.set_terrain_wait(120.0);
+    FrameOptions options;
+    options.terrain_wait_s = 120.0;
+    renderer.set_options(options);
     bool first = true;
     for (const TechniqueEntry& entry : technique_registry()) {
       std::string technique = entry.name + ":" + entry.quality_points.front().first;

@@ -11,6 +11,7 @@
 #include "terrain/ground.h"
 #include "terrain/terrain_config.h"
 
+#include "tests/atmosphere/image_difference.h"
 #include "tests/render/view_from_place.h"
 
 #include <gtest/gtest.h>
@@ -30,7 +31,7 @@ namespace PLANET_TEST_ID {
 std::set<std::string> ran(const FrameStats& stats) {
   std::set<std::string> out;
   for (const PassTiming& p : stats.passes) {
-    if (!p.reused) out.insert(p.pass);
+    if (p.ran()) out.insert(p.pass);
   }
   return out;
 }
@@ -43,49 +44,12 @@ std::set<std::string> reused(const FrameStats& stats) {
   return out;
 }
 
-// The largest difference of a value of a from b's, over the larger of the
-// two: 0 for the same bits, about 6e-8 for a float's last bit.
-//
 // What a pruned frame may differ by from the frame with nothing pruned: a
 // few of a float's last bits. The per-pixel path's own shader (compiled
 // without the LUT path and the terrain's shadow, which never reaches that
 // high) sums its march in another order of operations: 3.1e-7 at most
 // over the scenes and the climb below.
 constexpr double kSamePixels = 1e-6;
-double largest_relative_difference(const std::vector<float>& a, const std::vector<float>& b) {
-  if (a.size() != b.size()) return INFINITY;
-  double worst = 0.0;
-  for (size_t i = 0; i < b.size(); ++i) {
-    double scale = std::max(std::abs(double(a[i])), std::abs(double(b[i])));
-    if (scale > 0.0) worst = std::max(worst, std::abs(double(a[i]) - double(b[i])) / scale);
-  }
-  return worst;
-}
-
-// The largest over R, G and B of the RMSE of a against b over the mean of
-// b: the lab's relative RMSE, without its noise terms (neither is noisy).
-// `lit_only`: over the pixels with light in b alone, for a planet that
-// fills a few pixels of a black frame (the whole frame's would weigh its
-// differences by the frame's size over the planet's).
-double relative_rmse(const std::vector<float>& a, const std::vector<float>& b,
-                     bool lit_only = false) {
-  double worst = 0.0;
-  for (int c = 0; c < 3; ++c) {
-    double sum_sq = 0.0, sum = 0.0;
-    size_t n = 0;
-    for (size_t i = size_t(c); i < b.size(); i += 4) {
-      const size_t pixel = i - size_t(c);
-      if (lit_only && b[pixel] == 0.0f && b[pixel + 1] == 0.0f && b[pixel + 2] == 0.0f) continue;
-      double d = double(a[i]) - double(b[i]);
-      sum_sq += d * d;
-      sum += b[i];
-      ++n;
-    }
-    double mean = sum / double(n);
-    if (mean > 0.0) worst = std::max(worst, std::sqrt(sum_sq / double(n)) / mean);
-  }
-  return worst;
-}
 
 // The largest of the errors a test measured, and where.
 struct WorstError {
@@ -114,8 +78,11 @@ void expect_the_suns_disk_as_unpruned(const Body& body, const AtmosphereModel& m
                                       PlaceView view, glm::dvec2 pixel, int width, int height) {
   view.sun_dir_body = toward_pixel(view.camera, pixel, width, height);
   FrameRenderer pruned(width, height), unpruned(width, height);
-  for (FrameRenderer* r : {&pruned, &unpruned}) r->set_terrain_wait(120.0);
-  unpruned.set_view_pruning(false);
+  FrameOptions options;
+  options.terrain_wait_s = 120.0;
+  pruned.set_options(options);
+  options.view_pruning = false;
+  unpruned.set_options(options);
   pruned.set_body(body, model, make_technique("hillaire"));
   unpruned.set_body(body, model, make_technique("hillaire"));
   pruned.render(view.camera, view.sun_dir_body, 10.0);
@@ -262,7 +229,9 @@ TEST_F(PassReuseGLTest, NoAerialPerspectiveWithoutASurfaceInItsRangeAndTheSameIm
   auto up = view_from_place(body_.shape, {glm::radians(46.55), glm::radians(7.98), 4000.0}, 0.0,
                             60.0, 50.0, 10.0, 0.0);
   FrameRenderer pruned(64, 48), unpruned(64, 48);
-  unpruned.set_view_pruning(false);
+  FrameOptions options;
+  options.view_pruning = false;
+  unpruned.set_options(options);
   pruned.set_body(body_, model_, make_technique("hillaire"));
   unpruned.set_body(body_, model_, make_technique("hillaire"));
   FrameStats stats = pruned.render(up.camera, up.sun_dir_body, 10.0);
@@ -286,7 +255,9 @@ TEST_F(PassReuseGLTest, FromSpaceOnlyThePixelsInTheShellsBoundAreShadedAndTheIma
   const int width = 96, height = 64;
   view.sun_dir_body = toward_pixel(view.camera, {80.5, 50.5}, width, height);
   FrameRenderer pruned(width, height), unpruned(width, height);
-  unpruned.set_view_pruning(false);
+  FrameOptions options;
+  options.view_pruning = false;
+  unpruned.set_options(options);
   auto technique = std::make_unique<HillaireTechnique>();
   HillaireTechnique* hillaire = technique.get();
   pruned.set_body(body_, model_, std::move(technique));
@@ -338,7 +309,9 @@ TEST_F(PassReuseGLTest, PruningByViewChangesNoPixelOnTheCanonicalScenesOrAClimbT
   auto compare = [](const Body& body, const AtmosphereModel& model, int width, int height,
                     const Camera& camera, const glm::dvec3& sun, const std::string& where) {
     FrameRenderer pruned(width, height), unpruned(width, height);
-    unpruned.set_view_pruning(false);
+    FrameOptions options;
+    options.view_pruning = false;
+    unpruned.set_options(options);
     pruned.set_body(body, model, make_technique("hillaire"));
     unpruned.set_body(body, model, make_technique("hillaire"));
     FrameStats stats = pruned.render(camera, sun, 10.0);

@@ -1,6 +1,8 @@
 #include "gl/context.h"
+#include "gl/timer.h"
 
 #include <epoxy/gl.h>
+#include <gtest/gtest-spi.h>
 #include <gtest/gtest.h>
 
 #include <string>
@@ -23,11 +25,35 @@ TEST(ContextGLTest, HeadlessCoreContextWithComputeShaders) {
   check_gl_errors("context test");
 }
 
+// A call the GL refuses: 123456 names no texture (GL_INVALID_OPERATION).
+void bind_a_texture_that_does_not_exist() { glBindTexture(GL_TEXTURE_2D, 123456); }
+
+// The same inside a timed pass, as a frame's passes run.
+void bind_it_in_a_pass() {
+  GpuTimer timer;
+  timer.begin("the_bad_pass");
+  bind_a_texture_that_does_not_exist();
+  timer.end();
+  timer.collect();
+}
+
 TEST(ContextGLTest, DriverErrorsBecomeExceptions) {
   auto context = GlContext::create_headless();
-  glBindTexture(GL_TEXTURE_2D, 123456);  // not a texture name: GL_INVALID_OPERATION
+  EXPECT_NONFATAL_FAILURE(bind_a_texture_that_does_not_exist(), "glBindTexture");
   EXPECT_THROW(check_gl_errors("bad bind"), std::runtime_error);
   EXPECT_NO_THROW(check_gl_errors("after"));
+}
+
+// In the test programs a GL error fails the test whose call made it, at
+// the call, whether or not the code goes on to check_gl_errors(); the
+// failure names the GL function and the pass it ran in.
+TEST(ContextGLTest, AGlErrorFailsTheTestThatMadeItNamingTheCallAndThePass) {
+  auto context = GlContext::create_headless();
+  EXPECT_NONFATAL_FAILURE(bind_a_texture_that_does_not_exist(),
+                          "GL_INVALID_OPERATION in glBindTexture");
+  EXPECT_NONFATAL_FAILURE(bind_it_in_a_pass(), "in pass the_bad_pass");
+  // Kept for check_gl_errors() too, as the program meets them.
+  EXPECT_THROW(check_gl_errors("the deliberate errors"), std::runtime_error);
 }
 
 // A software driver's shaders run in threads it starts with the context:

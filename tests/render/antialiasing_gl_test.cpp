@@ -34,11 +34,11 @@ struct Frame {
 Frame render(const Body& body, const PlaceView& view, int width, int height, int samples,
              double pixel_budget) {
   FrameRenderer renderer(width, height);
-  renderer.set_antialiasing(samples);
-  TerrainOptions terrain;
+  FrameOptions options;
+  options.antialiasing = samples;
   // The same tiles at every size: their error is counted in pixels.
-  terrain.pixel_budget = pixel_budget;
-  renderer.set_terrain_options(terrain);
+  options.terrain.pixel_budget = pixel_budget;
+  renderer.set_options(options);
   if (body.has_atmosphere()) {
     renderer.set_body(body, load_atmosphere(body), make_technique("hillaire"));
   } else {

@@ -103,9 +103,23 @@ TEST_F(FrameGLTest, NightSideIsDarkFromOrbit) {
   EXPECT_LT(luminance(at(hdr, kSize / 2, kSize - 1)), 1e-5f);
 }
 
+// Each pass's name in the frame's timings, by what became of it.
+struct PassesBy {
+  std::vector<std::string> ran, skipped;
+};
+PassesBy passes_by(const FrameStats& stats) {
+  PassesBy by;
+  for (const PassTiming& p : stats.passes) {
+    if (p.skipped) by.skipped.push_back(p.pass);
+    if (p.ran()) by.ran.push_back(p.pass);
+  }
+  return by;
+}
+
 // The Moon has no air: its frame is the surface pass and the tone map,
-// with no atmosphere pass at all (not even a copy), and the sunlit ground
-// and black space are what it shows.
+// with no atmosphere pass at all (not even a copy): the atmosphere's
+// passes, and those of the options left off, are listed as skipped. The
+// sunlit ground and black space are what it shows.
 TEST(AirlessFrameGLTest, TheMoonRunsNoAtmospherePass) {
   auto context = GlContext::create_headless();
   Body moon = load_body(data_dir() / "planets" / "moon.json");
@@ -116,9 +130,12 @@ TEST(AirlessFrameGLTest, TheMoonRunsNoAtmospherePass) {
   auto view = view_from_place(moon.shape, {0.0, glm::radians(20.0), 30e3}, 90.0, -10.0, 60.0,
                               30.0, 90.0);
   FrameStats stats = renderer.render(view.camera, view.sun_dir_body, 10.0);
-  std::vector<std::string> passes;
-  for (const PassTiming& p : stats.passes) passes.push_back(p.pass);
-  EXPECT_EQ(passes, (std::vector<std::string>{"surface", "tonemap"}));
+  PassesBy passes = passes_by(stats);
+  EXPECT_EQ(passes.ran, (std::vector<std::string>{"surface", "tonemap"}));
+  EXPECT_EQ(passes.skipped,
+            (std::vector<std::string>{"atmosphere_tables", "fade:frame", "resolve",
+                                      "terrain_shadow", "atmosphere", "antialias", "fade", "stars",
+                                      "exposure", "glare", "smooth_edges"}));
   std::vector<float> hdr = renderer.read_hdr();
   // Top row: space, black; bottom row: the sunlit ground.
   auto luminance = [&](int x, int y_from_bottom) {
@@ -127,6 +144,38 @@ TEST(AirlessFrameGLTest, TheMoonRunsNoAtmospherePass) {
   };
   EXPECT_EQ(luminance(width / 2, height - 1), 0.0f);
   EXPECT_GT(luminance(width / 2, 0), 0.01f);
+}
+
+// With every option on, the frame's own passes run in the graph's order
+// (the technique's, raymarch's "sky", between the resolve and the edges);
+// with a switch fading, the previous technique's frame comes first, each of
+// its passes named "fade:...", and is laid over the new one after the
+// edges.
+TEST_F(FrameGLTest, EveryOptionsPassRunsInTheFramesOrder) {
+  FrameOptions options;
+  options.antialiasing = 4;
+  options.smooth_edges = true;
+  options.stars = true;
+  options.glare = true;
+  options.auto_exposure = true;
+  renderer_->set_options(options);
+  auto view = view_from_place(body_.shape, {glm::radians(46.5), glm::radians(8.0), 2.0}, 0.0, 10.0,
+                              60.0, 20.0, 180.0);
+  PassesBy passes = passes_by(renderer_->render(view.camera, view.sun_dir_body, 10.0));
+  EXPECT_EQ(passes.ran, (std::vector<std::string>{"surface", "resolve", "sky", "antialias", "stars",
+                                                  "exposure", "glare", "tonemap", "smooth_edges"}));
+  // A smooth body casts no shadow; no switch fades.
+  EXPECT_EQ(passes.skipped, (std::vector<std::string>{"fade:frame", "terrain_shadow", "fade"}));
+
+  std::unique_ptr<AtmosphereTechnique> previous = make_technique("raymarch");
+  previous->update(load_atmosphere(body_));
+  renderer_->set_fade(previous.get(), 0.5);
+  passes = passes_by(renderer_->render(view.camera, view.sun_dir_body, 10.0));
+  EXPECT_EQ(passes.ran,
+            (std::vector<std::string>{"fade:surface", "fade:resolve", "sky", "fade:antialias",
+                                      "fade:keep", "surface", "resolve", "sky", "antialias", "fade",
+                                      "stars", "exposure", "glare", "tonemap", "smooth_edges"}));
+  renderer_->set_fade(nullptr, 0.0);
 }
 
 TEST(ProjectionTest, ReversedZInfiniteFarPlane) {

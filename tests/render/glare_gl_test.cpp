@@ -38,12 +38,14 @@ Frame render(bool glare, double heading_deg, double pitch_deg, double fov_deg,
   PlaceView view = view_from_place(body.shape, {glm::radians(46.55), glm::radians(7.98), 6000.0},
                                    heading_deg, pitch_deg, fov_deg, 20.0, 240.0);
   FrameRenderer renderer(kWidth, kHeight);
-  renderer.set_antialiasing(4);
+  FrameOptions options;
+  options.antialiasing = 4;
+  options.glare = glare;
+  renderer.set_options(options);
   renderer.set_body(body, load_atmosphere(body), make_technique("hillaire"));
-  renderer.set_glare(glare);
   FrameStats stats = renderer.render(view.camera, view.sun_dir_body, exposure);
   Frame f{renderer.read_hdr(), renderer.read_ldr(), false};
-  for (const auto& p : stats.passes) f.glare_pass = f.glare_pass || p.pass == "glare";
+  for (const auto& p : stats.passes) f.glare_pass = f.glare_pass || (p.pass == "glare" && p.ran());
   return f;
 }
 

@@ -16,6 +16,7 @@
 #include "lab/scene.h"
 
 #include "core/data_paths.h"
+#include "core/error.h"
 #include "core/image_io.h"
 #include "gl/context.h"
 
@@ -289,6 +290,32 @@ TEST_F(GovernorGLTest, ANamedTechniqueWinsOverTheBudget) {
   nlohmann::json j = sidecar(dir, 0);
   EXPECT_EQ(j.at("technique"), "raymarch");
   EXPECT_FALSE(j.contains("governor"));
+}
+
+// The capture reads its inputs once, before GL starts: the governor's
+// table is parsed by plan_capture and the run takes it from the plan, so a
+// table gone from the disk by then changes nothing (a second read would
+// fail on it).
+TEST_F(GovernorGLTest, TheCaptureReadsTheGovernorsTableOnceInItsPlan) {
+  std::filesystem::create_directories(root_);
+  const std::filesystem::path table = root_ / "error_model.json";
+  std::filesystem::copy_file(shipped_error_model_file(), table);
+  CaptureOptions o;
+  o.out_dir = root_ / "planned";
+  o.end_frame = 1;
+  o.progress = false;
+  o.error_model_file = table;
+  const CapturePlan plan = plan_capture(script_, o);
+  ASSERT_TRUE(plan.budget.has_value());
+  ASSERT_TRUE(plan.error_model.has_value());
+  EXPECT_EQ(plan.first, 0);
+  EXPECT_EQ(plan.end, 1);
+  std::filesystem::remove(table);
+  EXPECT_EQ(run_capture(script_, o, plan).frames, 1);
+  EXPECT_TRUE(sidecar(o.out_dir, 0).contains("governor"));
+  // Bad frames are refused by the plan, before any GL work.
+  o.first_frame = 1;
+  EXPECT_THROW(plan_capture(script_, o), InputError);
 }
 
 }  // namespace PLANET_TEST_ID

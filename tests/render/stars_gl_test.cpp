@@ -54,8 +54,10 @@ Scene alps(const std::string& time) {
 
 Frame render(const Scene& scene, bool stars, bool automatic, double exposure = 8.0) {
   FrameRenderer renderer(kWidth, kHeight);
-  renderer.set_stars(stars);
-  renderer.set_auto_exposure(automatic);
+  FrameOptions options;
+  options.stars = stars;
+  options.auto_exposure = automatic;
+  renderer.set_options(options);
   renderer.set_star_orientation(body_from_icrf(scene.body, scene.utc));
   if (scene.body.has_atmosphere()) {
     renderer.set_body(scene.body, load_atmosphere(scene.body), make_technique("hillaire"));

@@ -35,7 +35,9 @@ struct Frame {
 Frame render(const Body& body, const PlaceView& view, bool shadows,
              const std::string& technique = "hillaire") {
   FrameRenderer renderer(kWidth, kHeight);
-  renderer.set_terrain_shadows(shadows);
+  FrameOptions options;
+  options.terrain_shadows = shadows;
+  renderer.set_options(options);
   renderer.set_body(body, load_atmosphere(body), make_technique(technique));
   renderer.render(view.camera, view.sun_dir_body, 10.0);
   return {renderer.read_hdr(), renderer.read_distance(view.camera)};

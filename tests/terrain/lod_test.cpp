@@ -234,6 +234,14 @@ TEST(TileCacheTest, ATileThatNeverFinishesEndsTheWaitAndTheCache) {
   stuck->arm(false);
 }
 
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kUnderAddressSanitizer = true;
+#elif defined(__has_feature)
+constexpr bool kUnderAddressSanitizer = __has_feature(address_sanitizer);
+#else
+constexpr bool kUnderAddressSanitizer = false;
+#endif
+
 TEST(TileCacheTest, LongFlightStaysUnderBudgetWithoutGrowth) {
   // 3000 frames of a window's loop (select, request, use, evict; never
   // waiting) on a smooth Mars-sized ellipsoid, whose tiles are cheap to
@@ -270,8 +278,13 @@ TEST(TileCacheTest, LongFlightStaysUnderBudgetWithoutGrowth) {
       << "the flight must overflow the cache";
   // Tiles finished by the worker after the last eviction may add a few.
   EXPECT_LE(worst_bytes, budget + 8 * kTileVertexCount * sizeof(TileVertex));
-  // Allocator slack only: well under the budget itself.
-  EXPECT_LT(double(rss_end), double(rss_warm) + 0.5 * double(budget));
+  // Allocator slack only: well under the budget itself. Not under
+  // AddressSanitizer, whose quarantine keeps freed blocks (256 MiB of them)
+  // from reuse, so that the process grows by design; LeakSanitizer checks
+  // there, at exit, what this bound checks here.
+  if (!kUnderAddressSanitizer) {
+    EXPECT_LT(double(rss_end), double(rss_warm) + 0.5 * double(budget));
+  }
 }
 
 }  // namespace PLANET_TEST_ID

@@ -7,7 +7,9 @@
 // a surface or the ground (1), those of them next to the horizon (2), and
 // those whose ray misses the atmosphere (3), giving the last the sun's
 // disk; kSkyPass draws the sky through the atmosphere, kAerialPass the
-// surfaces and the ground, kHorizonPass those next to the horizon.
+// surfaces and the ground, kHorizonPass those next to the horizon. The
+// plain schedule (gl/schedule.h) draws every pixel with kAllPass instead,
+// which takes each pixel's class in its own branches.
 #include "atmosphere/gpu/bruneton/bruneton_common.glsl"
 #include "atmosphere/gpu/sky_pixel.glsl"
 
@@ -15,6 +17,7 @@
 #define kSkyPass 1
 #define kAerialPass 2
 #define kHorizonPass 3
+#define kAllPass 4
 #if PASS != kClassifyPass
 layout(early_fragment_tests) in;
 #endif
@@ -139,9 +142,12 @@ vec3 sky_radiance_to_point(Atmosphere atmosphere, ViewToPoint v, out vec3 transm
   transmittance = vec3(1.0);
   if (!v.in_atmosphere) return vec3(0.0);
   float r = v.r, mu = v.mu, mu_s = v.mu_s, nu = v.nu, d = v.d, mu_h = v.mu_h;
-#if PASS != kHorizonPass
+#if PASS == kAllPass
+  if (!near_horizon(v)) return in_scattering(atmosphere, r, mu, mu_s, nu, d, transmittance);
+#elif PASS != kHorizonPass
   return in_scattering(atmosphere, r, mu, mu_s, nu, d, transmittance);
-#else
+#endif
+#if PASS == kHorizonPass || PASS == kAllPass
   vec3 t_below, t_above;
   vec3 below = in_scattering(atmosphere, r, mu_h - HORIZON_BLEND, mu_s, nu, d, t_below);
   vec3 above = in_scattering(atmosphere, r, mu_h + HORIZON_BLEND, mu_s, nu, d, t_above);
@@ -191,6 +197,23 @@ void main() {
 #endif
   if (!keep) discard;
   radiance = sun_disk_radiance(atmosphere, dot(dir, u_sun_dir));
+#elif PASS == kAllPass
+  // The classes of kClassifyPass, each pixel in its own branch.
+  float t_top_near, t_top_far;
+  bool in_atmosphere = ray_sphere(camera, dir, atmosphere.top_radius, t_top_near, t_top_far) &&
+                       t_top_far > 0.0;
+  if (depth > 0.0 || hits_ground) {
+    vec3 surface = pixel.surface;
+    if (depth == 0.0) surface = ground_radiance_at(atmosphere, camera + t_ground_near * dir);
+    vec3 in_scatter = sky_radiance_to_point(
+        atmosphere, view_to_point(atmosphere, camera, camera + t * dir), transmittance);
+    radiance = in_scatter + transmittance * surface;
+  } else if (!in_atmosphere) {
+    radiance = sun_disk_radiance(atmosphere, dot(dir, u_sun_dir));
+  } else {
+    radiance = sky_radiance(atmosphere, camera, dir, transmittance);
+    radiance += transmittance * sun_disk_radiance(atmosphere, dot(dir, u_sun_dir));
+  }
 #elif PASS == kAerialPass || PASS == kHorizonPass
   vec3 surface = pixel.surface;
   if (depth == 0.0) surface = ground_radiance_at(atmosphere, camera + t_ground_near * dir);

@@ -71,7 +71,9 @@ uintmax_t BrunetonTechnique::table_file_bytes(const Settings& s) {
 }
 
 BrunetonTechnique::BrunetonTechnique(Settings settings)
-    : settings_(settings), block_(make_buffer(sizeof(AtmosphereBlock), nullptr)) {
+    : settings_(settings),
+      schedule_(settings.schedule ? *settings.schedule : current_schedule()),
+      block_(make_buffer(sizeof(AtmosphereBlock), nullptr)) {
   const Settings& s = settings_;
   if (s.mu % 2 != 0) {
     throw InputError(
@@ -109,10 +111,14 @@ BrunetonTechnique::BrunetonTechnique(Settings settings)
         "gl/shaders/fullscreen.vert", "atmosphere/gpu/bruneton/bruneton_sky.frag",
         defines({fmt::format("PASS {}", which), fmt::format("CLASS {}", pixel_class)}));
   };
-  for (int c = 1; c <= 3; ++c) classify_programs_[size_t(c - 1)] = pass("kClassifyPass", c);
-  sky_program_ = pass("kSkyPass");
-  aerial_program_ = pass("kAerialPass");
-  horizon_program_ = pass("kHorizonPass");
+  if (schedule_ == Schedule::kPlain) {
+    all_program_ = pass("kAllPass");
+  } else {
+    for (int c = 1; c <= 3; ++c) classify_programs_[size_t(c - 1)] = pass("kClassifyPass", c);
+    sky_program_ = pass("kSkyPass");
+    aerial_program_ = pass("kAerialPass");
+    horizon_program_ = pass("kHorizonPass");
+  }
   ground_irradiance_ = make_texture_2d(GL_RGBA32F, kGroundIrradianceWidth, 1);
 }
 
@@ -210,7 +216,17 @@ class BrunetonTechnique::Build final : public TableBuild {
   }
 
   void begin();
+  // The precompute's slices: order 1, then each order from the one before,
+  // then the orders' tail; `before` holds the order before's index in the
+  // pairs of tables that alternate.
+  struct Before {
+    int irradiance = 0, multiple = 0;
+  };
   void plan_precompute();
+  void plan_first_order();
+  void plan_order(int order, Before& before);
+  void plan_tail(const Before& before);
+  void plan_release();
   void keep();
   void end();
 
@@ -322,14 +338,27 @@ void BrunetonTechnique::Build::begin() {
 }
 
 void BrunetonTechnique::Build::plan_precompute() {
+  done_at_ = 0;
+  plan_first_order();
+  Before before;
+  for (int order = 2; order <= s_.orders; ++order) plan_order(order, before);
+  // The orders past the last as a geometric series: of the light, from the
+  // last two orders of multiple scattering; of the ground's sky light, from
+  // the last two of its own (the sky's irradiance runs an order behind).
+  if (s_.tail && s_.orders >= 3) plan_tail(before);
+  plan_release();
+}
+
+// Order 1: transmittance, the sun on the ground, single scattering.
+void BrunetonTechnique::Build::plan_first_order() {
   const Settings& s = s_;
   const int width = s.nu * s.mu_s;
   const GLenum scattering_format = s.half ? GL_RGBA16F : GL_RGBA32F;
-  const GLuint transmittance = t_.transmittance_.id(), irradiance = t_.irradiance_.id();
+  const GLuint transmittance = t_.transmittance_.id();
   Texture& scattering = t_.scattering_;
   Texture& single_mie = t_.single_mie_;
-  done_at_ = 0;
-  add(fmt::format("order 1 of {}", s.orders), 0, [this, width] {
+  const std::string first = fmt::format("order 1 of {}", s.orders);
+  add(first, 0, [this, width] {
     t_.precompute_seconds_.clear();
     progress_.emplace(fmt::format("bruneton tables ({} orders)", s_.orders), s_.orders, "order");
     progress_->update(0);
@@ -344,11 +373,6 @@ void BrunetonTechnique::Build::plan_precompute() {
     const float zero[4] = {0, 0, 0, 0};
     glClearTexImage(t_.irradiance_.id(), 0, GL_RGBA, GL_FLOAT, zero);
   });
-  // The order before's index in the pairs.
-  int irradiance_before = 0, multiple_before = 0;
-
-  // Order 1: transmittance, the sun on the ground, single scattering.
-  const std::string first = fmt::format("order 1 of {}", s.orders);
   compile("transmittance", "transmittance.comp");
   add(first, 0, [this, transmittance] {
     use("transmittance");
@@ -385,94 +409,108 @@ void BrunetonTechnique::Build::plan_precompute() {
   compile("irradiance_first", "indirect_irradiance.comp", {"FIRST_ORDER 1"});
   compile("irradiance_next", "indirect_irradiance.comp");
   compile("multiple", "multiple_scattering.comp");
-  for (int order = 2; order <= s.orders; ++order) {
-    const std::string what = fmt::format("order {} of {}", order, s.orders);
-    const bool after_first = order == 2;
-    add(what, order - 1, [this] { began_ = std::chrono::steady_clock::now(); });
-    // The density of this order from the order before and the ground lit by
-    // the one before that; then the ground's irradiance from the order
-    // before, added to the sky's (the same inputs).
-    auto inputs = [this, transmittance, after_first, irradiance_before, multiple_before] {
-      glBindTextureUnit(0, transmittance);
-      if (after_first) {
-        glBindTextureUnit(1, delta_rayleigh_.id());
-        glBindTextureUnit(2, delta_mie_.id());
-      } else {
-        glBindTextureUnit(1, multiple_orders_[multiple_before].id());
-      }
-      glBindTextureUnit(3, irradiance_orders_[irradiance_before].id());
-    };
-    const std::string density = after_first ? "density_first" : "density_next";
-    over_layers(
-        what,
-        [this, inputs, density]() -> const Program& {
-          const Program& p = use(density);
-          inputs();
-          bind_image(0, density_, GL_RGBA32F, true);
-          return p;
-        },
-        GLuint(s.mu_s), 1, false, order - 1, 0.6);
-    add(what, order - 1 + 0.6, [this, inputs, after_first, irradiance, irradiance_before] {
-      use(after_first ? "irradiance_first" : "irradiance_next");
-      inputs();
-      bind_image(0, irradiance_orders_[1 - irradiance_before], GL_RGBA32F, false);
-      glBindImageTexture(1, irradiance, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-      glDispatchCompute(groups(s_.irradiance_width, 8), groups(s_.irradiance_height, 8), 1);
-      glMemoryBarrier(kTableBarrier);
-    });
-    irradiance_before = 1 - irradiance_before;
-    // This order's light along every texel's ray, added to the sky's.
-    over_layers(
-        what,
-        [this, transmittance, &scattering, scattering_format, multiple_before]() -> const Program& {
-          const Program& p = use("multiple");
-          glBindTextureUnit(0, transmittance);
-          glBindTextureUnit(1, density_.id());
-          bind_image(0, multiple_orders_[1 - multiple_before], GL_RGBA32F, true);
-          bind_image(1, scattering, scattering_format, true, GL_READ_WRITE);
-          return p;
-        },
-        groups(width, 8), groups(s.mu, 8), true, order - 1 + 0.6, 0.4);
-    multiple_before = 1 - multiple_before;
-    done_at_ = order;
-    add(what, order, [this] { t_.precompute_seconds_.push_back(seconds_since(began_)); });
-  }
-  // The orders past the last as a geometric series: of the light, from the
-  // last two orders of multiple scattering; of the ground's sky light, from
-  // the last two of its own (the sky's irradiance runs an order behind).
-  if (s.tail && s.orders >= 3) {
-    const std::string what = "the orders' tail";
-    add(what, s.orders, [this] { began_ = std::chrono::steady_clock::now(); });
-    compile("tail", "geometric_tail.comp");
-    over_layers(
-        what,
-        [this, &scattering, scattering_format, multiple_before]() -> const Program& {
-          const Program& p = use("tail");
-          glBindTextureUnit(1, multiple_orders_[1 - multiple_before].id());
-          glBindTextureUnit(2, multiple_orders_[multiple_before].id());
-          bind_image(1, scattering, scattering_format, true, GL_READ_WRITE);
-          return p;
-        },
-        groups(width, 8), groups(s.mu, 8), true, s.orders, 0.0);
-    compile("irradiance_tail", "irradiance_tail.comp");
-    add(what, s.orders, [this, irradiance, irradiance_before] {
-      use("irradiance_tail");
-      glBindTextureUnit(1, irradiance_orders_[1 - irradiance_before].id());
-      glBindTextureUnit(2, irradiance_orders_[irradiance_before].id());
-      glBindImageTexture(1, irradiance, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
-      glDispatchCompute(groups(s_.irradiance_width, 8), groups(s_.irradiance_height, 8), 1);
-      glMemoryBarrier(kTableBarrier);
-      {
-        DriverWait wait("finishing the bruneton irradiance");
-        glFinish();
-      }
-      t_.precompute_seconds_.back() += seconds_since(began_);
-    });
-  }
-  add("its tables", s.orders, [this] {
+}
+
+void BrunetonTechnique::Build::plan_order(int order, Before& before) {
+  const Settings& s = s_;
+  const int width = s.nu * s.mu_s;
+  const GLenum scattering_format = s.half ? GL_RGBA16F : GL_RGBA32F;
+  const GLuint transmittance = t_.transmittance_.id(), irradiance = t_.irradiance_.id();
+  Texture& scattering = t_.scattering_;
+  const int irradiance_before = before.irradiance, multiple_before = before.multiple;
+  const std::string what = fmt::format("order {} of {}", order, s.orders);
+  const bool after_first = order == 2;
+  add(what, order - 1, [this] { began_ = std::chrono::steady_clock::now(); });
+  // The density of this order from the order before and the ground lit by
+  // the one before that; then the ground's irradiance from the order
+  // before, added to the sky's (the same inputs).
+  auto inputs = [this, transmittance, after_first, irradiance_before, multiple_before] {
+    glBindTextureUnit(0, transmittance);
+    if (after_first) {
+      glBindTextureUnit(1, delta_rayleigh_.id());
+      glBindTextureUnit(2, delta_mie_.id());
+    } else {
+      glBindTextureUnit(1, multiple_orders_[multiple_before].id());
+    }
+    glBindTextureUnit(3, irradiance_orders_[irradiance_before].id());
+  };
+  const std::string density = after_first ? "density_first" : "density_next";
+  over_layers(
+      what,
+      [this, inputs, density]() -> const Program& {
+        const Program& p = use(density);
+        inputs();
+        bind_image(0, density_, GL_RGBA32F, true);
+        return p;
+      },
+      GLuint(s.mu_s), 1, false, order - 1, 0.6);
+  add(what, order - 1 + 0.6, [this, inputs, after_first, irradiance, irradiance_before] {
+    use(after_first ? "irradiance_first" : "irradiance_next");
+    inputs();
+    bind_image(0, irradiance_orders_[1 - irradiance_before], GL_RGBA32F, false);
+    glBindImageTexture(1, irradiance, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+    glDispatchCompute(groups(s_.irradiance_width, 8), groups(s_.irradiance_height, 8), 1);
+    glMemoryBarrier(kTableBarrier);
+  });
+  before.irradiance = 1 - irradiance_before;
+  // This order's light along every texel's ray, added to the sky's.
+  over_layers(
+      what,
+      [this, transmittance, &scattering, scattering_format, multiple_before]() -> const Program& {
+        const Program& p = use("multiple");
+        glBindTextureUnit(0, transmittance);
+        glBindTextureUnit(1, density_.id());
+        bind_image(0, multiple_orders_[1 - multiple_before], GL_RGBA32F, true);
+        bind_image(1, scattering, scattering_format, true, GL_READ_WRITE);
+        return p;
+      },
+      groups(width, 8), groups(s.mu, 8), true, order - 1 + 0.6, 0.4);
+  before.multiple = 1 - multiple_before;
+  done_at_ = order;
+  add(what, order, [this] { t_.precompute_seconds_.push_back(seconds_since(began_)); });
+}
+
+void BrunetonTechnique::Build::plan_tail(const Before& before) {
+  const Settings& s = s_;
+  const int width = s.nu * s.mu_s;
+  const GLenum scattering_format = s.half ? GL_RGBA16F : GL_RGBA32F;
+  const GLuint irradiance = t_.irradiance_.id();
+  Texture& scattering = t_.scattering_;
+  const int irradiance_before = before.irradiance, multiple_before = before.multiple;
+  const std::string what = "the orders' tail";
+  add(what, s.orders, [this] { began_ = std::chrono::steady_clock::now(); });
+  compile("tail", "geometric_tail.comp");
+  over_layers(
+      what,
+      [this, &scattering, scattering_format, multiple_before]() -> const Program& {
+        const Program& p = use("tail");
+        glBindTextureUnit(1, multiple_orders_[1 - multiple_before].id());
+        glBindTextureUnit(2, multiple_orders_[multiple_before].id());
+        bind_image(1, scattering, scattering_format, true, GL_READ_WRITE);
+        return p;
+      },
+      groups(width, 8), groups(s.mu, 8), true, s.orders, 0.0);
+  compile("irradiance_tail", "irradiance_tail.comp");
+  add(what, s.orders, [this, irradiance, irradiance_before] {
+    use("irradiance_tail");
+    glBindTextureUnit(1, irradiance_orders_[1 - irradiance_before].id());
+    glBindTextureUnit(2, irradiance_orders_[irradiance_before].id());
+    glBindImageTexture(1, irradiance, 0, GL_FALSE, 0, GL_READ_WRITE, GL_RGBA32F);
+    glDispatchCompute(groups(s_.irradiance_width, 8), groups(s_.irradiance_height, 8), 1);
+    glMemoryBarrier(kTableBarrier);
+    {
+      DriverWait wait("finishing the bruneton irradiance");
+      glFinish();
+    }
+    t_.precompute_seconds_.back() += seconds_since(began_);
+  });
+}
+
+// The passes' own tables go before the tables are read back.
+void BrunetonTechnique::Build::plan_release() {
+  add("its tables", s_.orders, [this] {
     progress_->finish();
     progress_.reset();
-    // The passes' own tables go before the tables are read back.
     programs_.clear();
     for (Texture* t : {&irradiance_orders_[0], &irradiance_orders_[1], &multiple_orders_[0],
                        &multiple_orders_[1], &delta_rayleigh_, &delta_mie_, &density_}) {
@@ -523,7 +561,25 @@ void BrunetonTechnique::make_ground_irradiance() {
   glMemoryBarrier(kTableBarrier);
 }
 
+// The stencil's classes (see bruneton_sky.frag): 0 the sky through the
+// atmosphere, 1 a surface or the ground, 2 those next to the horizon, 3
+// space and the sun alone.
+constexpr GLint kSkyClass = 0, kGroundClass = 1, kHorizonClass = 2, kSpaceClass = 3;
+
 void BrunetonTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
+  set_frame_uniforms(frame);
+  std::vector<Pass> passes;
+  if (schedule_ == Schedule::kPlain) {
+    passes.push_back({.name = "sky", .run = [this, &frame] { draw_every_pixel(frame); }});
+  } else {
+    passes.push_back({.name = "sky", .run = [this, &frame] { draw_sky(frame); }});
+    // The pixels whose class the sky pass set.
+    passes.push_back({.name = "aerial", .reads = {"sky"}, .run = [this] { draw_aerial(); }});
+  }
+  graph_.run(std::move(passes), timer);
+}
+
+void BrunetonTechnique::set_frame_uniforms(const SkyFrame& frame) {
   glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, block_.id());
   glBindTextureUnit(0, frame.depth_texture);
   glBindTextureUnit(1, frame.surface_texture);
@@ -531,9 +587,9 @@ void BrunetonTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   glBindTextureUnit(3, scattering_.id());
   glBindTextureUnit(4, single_mie_.id());
   glBindTextureUnit(5, irradiance_.id());
-  for (const Program* p :
-       {&classify_programs_[0], &classify_programs_[1], &classify_programs_[2], &sky_program_,
-        &aerial_program_, &horizon_program_}) {
+  for (const Program* p : {&classify_programs_[0], &classify_programs_[1], &classify_programs_[2],
+                           &sky_program_, &aerial_program_, &horizon_program_, &all_program_}) {
+    if (p->id() == 0) continue;  // not this schedule's
     p->use();
     glUniform1f(p->uniform("u_mu_s_min"), float(mu_s_min_));
     glUniform3fv(p->uniform("u_camera"), 1, glm::value_ptr(glm::vec3(frame.camera_atmo)));
@@ -542,33 +598,39 @@ void BrunetonTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
     glUniform3fv(p->uniform("u_sun_dir"), 1, glm::value_ptr(frame.sun_dir_atmo));
     glUniform1f(p->uniform("u_near"), frame.near);
   }
-  // The stencil's classes (see bruneton_sky.frag): 0 the sky through the
-  // atmosphere, 1 a surface or the ground, 2 those next to the horizon, 3
-  // space and the sun alone.
-  constexpr GLint kSky = 0, kGround = 1, kHorizon = 2, kSpace = 3;
-  timer.begin("sky");
+}
+
+// The pixels' classes into the stencil, then the sky's pixels.
+void BrunetonTechnique::draw_sky(const SkyFrame& frame) {
   sky_pass_.begin(frame.target_framebuffer, frame.width, frame.height, classify_programs_[0]);
   glEnable(GL_STENCIL_TEST);
   glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-  for (GLint pixel_class : {kGround, kHorizon, kSpace}) {
+  for (GLint pixel_class : {kGroundClass, kHorizonClass, kSpaceClass}) {
     glStencilFunc(GL_ALWAYS, pixel_class, 0xff);
     classify_programs_[size_t(pixel_class - 1)].use();
     sky_pass_.draw();
   }
   glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-  glStencilFunc(GL_EQUAL, kSky, 0xff);
+  glStencilFunc(GL_EQUAL, kSkyClass, 0xff);
   sky_program_.use();
   sky_pass_.draw();
-  timer.end();
-  timer.begin("aerial");
-  glStencilFunc(GL_EQUAL, kGround, 0xff);
+}
+
+// Every pixel by one program, which takes its class in its own branches.
+void BrunetonTechnique::draw_every_pixel(const SkyFrame& frame) {
+  sky_pass_.begin(frame.target_framebuffer, frame.width, frame.height, all_program_);
+  sky_pass_.draw();
+}
+
+// The surfaces and the ground, and those next to the horizon.
+void BrunetonTechnique::draw_aerial() {
+  glStencilFunc(GL_EQUAL, kGroundClass, 0xff);
   aerial_program_.use();
   sky_pass_.draw();
-  glStencilFunc(GL_EQUAL, kHorizon, 0xff);
+  glStencilFunc(GL_EQUAL, kHorizonClass, 0xff);
   horizon_program_.use();
   sky_pass_.draw();
   glDisable(GL_STENCIL_TEST);
-  timer.end();
 }
 
 }  // namespace planet

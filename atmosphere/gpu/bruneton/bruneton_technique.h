@@ -9,12 +9,15 @@
 // (bruneton_cache.h), and every frame only reads them.
 #include "atmosphere/gpu/technique.h"
 #include "gl/fullscreen_pass.h"
+#include "gl/pass_graph.h"
 #include "gl/program.h"
+#include "gl/schedule.h"
 #include "gl/texture.h"
 
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,6 +42,10 @@ class BrunetonTechnique final : public AtmosphereTechnique {
     int transmittance_steps = 100;
     // The orders past the last as a geometric series (ours; Bruneton stops).
     bool tail = true;
+    // How the frame's pixels are split (gl/schedule.h): by the stencil's
+    // classes, a program each (software), or one program for all (plain);
+    // empty: current_schedule().
+    std::optional<Schedule> schedule;
   };
   explicit BrunetonTechnique(Settings settings);
   // The bytes one model's tables of these settings take in the disk cache
@@ -54,6 +61,7 @@ class BrunetonTechnique final : public AtmosphereTechnique {
   GLuint ground_irradiance() const override { return ground_irradiance_.id(); }
 
   const Settings& settings() const { return settings_; }
+  Schedule schedule() const { return schedule_; }
   // The tables came from the disk cache in the last update, not a precompute.
   bool from_cache() const { return from_cache_; }
   // Wall time of the last precompute, one entry per order, each ending
@@ -76,18 +84,25 @@ class BrunetonTechnique final : public AtmosphereTechnique {
  private:
   class Build;
   void make_ground_irradiance();
+  void set_frame_uniforms(const SkyFrame& frame);
+  void draw_sky(const SkyFrame& frame);
+  void draw_aerial();
+  void draw_every_pixel(const SkyFrame& frame);
   std::vector<std::string> defines(std::vector<std::string> more) const;
 
   Settings settings_;
+  Schedule schedule_;
   std::string key_;
   AtmosphereModel model_;
   double mu_s_min_ = -0.2;
   Buffer block_;
   Texture transmittance_, irradiance_, scattering_, single_mie_, ground_irradiance_;
-  // The stencil's classes 1 to 3, then the passes (bruneton_sky.frag).
+  // The stencil's classes 1 to 3, then the passes (bruneton_sky.frag);
+  // with the plain schedule, the one pass for every pixel alone.
   std::array<Program, 3> classify_programs_;
-  Program sky_program_, aerial_program_, horizon_program_;
+  Program sky_program_, aerial_program_, horizon_program_, all_program_;
   FullscreenPass sky_pass_;
+  PassGraph graph_;
   bool from_cache_ = false;
   std::vector<double> precompute_seconds_;
 };

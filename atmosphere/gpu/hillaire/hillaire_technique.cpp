@@ -6,7 +6,6 @@
 #include "atmosphere/screen_bound.h"
 #include "gl/timer.h"
 
-#include <fmt/format.h>
 #include <glm/gtc/type_ptr.hpp>
 
 #include <algorithm>
@@ -49,34 +48,6 @@ void bind_image(GLuint unit, GLuint texture, GLenum format, bool layered) {
   glBindImageTexture(unit, texture, 0, layered ? GL_TRUE : GL_FALSE, 0, GL_WRITE_ONLY, format);
 }
 
-// The passes that draw the view take the forward gain from its LUT; the
-// paper's form goes without, as the paper has it.
-std::vector<std::string> view_defines(const HillaireTechnique::Settings& settings,
-                                      std::string define,
-                                      std::vector<std::string> shadow_defines = {}) {
-  std::vector<std::string> defines = {std::move(define)};
-  if (settings.multiple_scattering == HillaireTechnique::MultipleScattering::kOrders) {
-    defines.push_back("FORWARD_GAIN_LUT 1");
-  }
-  if (settings.terrain_shadows) {
-    defines.insert(defines.end(), shadow_defines.begin(), shadow_defines.end());
-  }
-  return defines;
-}
-
-// The sky pass (hillaire_sky.frag) drawn by `vertex`, whole or in the
-// variant that `parts` define (NO_MARCH, NO_LUT, GREY_MIE); without the
-// terrain's shadow where `shadow` is false.
-Program sky_program(const HillaireTechnique::Settings& settings, const char* vertex,
-                    const std::vector<std::string>& parts = {}, bool shadow = true) {
-  std::vector<std::string> defines =
-      view_defines(settings, fmt::format("PER_PIXEL_STEPS {}", settings.per_pixel_steps),
-                   shadow ? std::vector<std::string>{"TERRAIN_SHADOWS 1"}
-                          : std::vector<std::string>{});
-  defines.insert(defines.end(), parts.begin(), parts.end());
-  return Program::graphics(vertex, "atmosphere/gpu/hillaire/hillaire_sky.frag", defines);
-}
-
 // Pixels a side of sky_march_tiles.comp's tiles, and the buffer binding of
 // its list.
 constexpr int kMarchTile = 8;
@@ -103,57 +74,23 @@ glm::ivec4 pixel_rect(const NdcRect& ndc, int w, int h, int margin) {
 double quantize(double x, double step) { return step > 0.0 ? std::round(x / step) * step : x; }
 
 // One compute pass that fills a whole 2D LUT, one invocation per texel.
-void build_lut(GpuTimer& timer, const char* name, Program& program, const Texture& lut,
-               GLenum format, int width, int height) {
-  timer.begin(name);
+void build_lut(const Program& program, const Texture& lut, GLenum format, int width, int height) {
   program.use();
   bind_image(0, lut.id(), format, false);
   glDispatchCompute(groups(width), groups(height), 1);
   glMemoryBarrier(kLutBarrier);
-  timer.end();
-}
-
-// The scattering-orders pass, for the first order (from the sun) or for
-// the ones after it (from the order before). Two programs rather than a
-// uniform: llvmpipe runs both sides of a branch on a uniform, which made
-// the pass 1.7 times slower.
-Program orders_program(bool first_order) {
-  std::vector<std::string> defines = {"SCATTERING_ORDERS_PASS 1"};
-  if (first_order) defines.push_back("FIRST_ORDER 1");
-  return Program::compute("atmosphere/gpu/hillaire/scattering_orders.comp", defines);
 }
 
 }  // namespace
 
 HillaireTechnique::HillaireTechnique(Settings settings)
     : settings_(settings),
-      transmittance_program_(Program::compute("atmosphere/gpu/hillaire/transmittance_lut.comp",
-                                              {"TRANSMITTANCE_PASS 1"})),
-      multiple_scattering_program_(Program::compute(
-          "atmosphere/gpu/hillaire/multiple_scattering_lut.comp", {"MULTIPLE_SCATTERING_PASS 1"})),
-      first_order_program_(orders_program(true)),
-      next_order_program_(orders_program(false)),
-      orders_sum_program_(Program::compute("atmosphere/gpu/hillaire/scattering_orders_sum.comp",
-                                           {"SCATTERING_ORDERS_PASS 1"})),
-      forward_gain_program_(Program::compute("atmosphere/gpu/hillaire/forward_gain_lut.comp")),
-      sky_view_program_(Program::compute(
-          "atmosphere/gpu/hillaire/sky_view_lut.comp",
-          view_defines(settings, fmt::format("SKY_VIEW_STEPS {}", settings.sky_view_steps)))),
-      aerial_program_(Program::compute(
-          "atmosphere/gpu/hillaire/aerial_perspective.comp",
-          view_defines(settings, fmt::format("AERIAL_SUBSTEPS {}", settings.aerial_substeps),
-                       {"TERRAIN_SHADOWS 1", "TERRAIN_SHADOW_LOSS 1"}))),
-      sky_program_(sky_program(settings, "gl/shaders/fullscreen.vert")),
-      space_program_(Program::graphics("gl/shaders/fullscreen.vert", "atmosphere/gpu/space.frag")),
-      space_unlit_program_(Program::graphics("gl/shaders/fullscreen.vert",
-                                             "atmosphere/gpu/space.frag", {"NO_SUN_DISK 1"})),
-      sky_classify_program_(sky_program(settings, "gl/shaders/fullscreen.vert", {"CLASSIFY 1"})),
-      sky_open_program_(sky_program(settings, "gl/shaders/fullscreen.vert",
-                                    {"NO_MARCH 1", "NO_SUN_DISK 1", "OPEN_SKY_ONLY 1"})),
-      sky_surface_program_(sky_program(settings, "gl/shaders/fullscreen.vert",
-                                       {"NO_MARCH 1", "NO_SUN_DISK 1", "SURFACE_ONLY 1"})),
-      sky_tiles_program_(sky_program(settings, "atmosphere/gpu/hillaire/sky_tiles.vert")),
-      march_tiles_program_(Program::compute("atmosphere/gpu/hillaire/sky_march_tiles.comp")),
+      schedule_(settings.schedule ? *settings.schedule : current_schedule()),
+      programs_(HillaireShaderOptions{settings.multiple_scattering == MultipleScattering::kOrders,
+                                      settings.terrain_shadows, settings.sky_view_steps,
+                                      settings.per_pixel_steps, settings.aerial_substeps,
+                                      settings.space_view_steps},
+                schedule_),
       transmittance_lut_(make_texture_2d(GL_RGBA32F, shared::kTransmittanceLutWidth,
                                          shared::kTransmittanceLutHeight)),
       multiple_scattering_lut_(
@@ -216,71 +153,107 @@ void HillaireTechnique::update(const AtmosphereModel& model) {
               block.mie_scattering.y == block.mie_scattering.z;
 }
 
+// What the frame's passes read, decided once before they run: the
+// camera as the LUTs see it, the sky view's rounded inputs, the terrain's
+// shadow, and the pixels the sky pass shades.
+struct HillaireTechnique::FrameState {
+  const SkyFrame& frame;
+  double r = 0.0, altitude = 0.0;
+  // Lifted onto the bottom sphere (a metre above it) when below it: the
+  // LUTs describe the sky seen from inside the shell, as the sky pass does.
+  glm::dvec3 camera{0.0};
+  double r_min = 0.0;
+  float lut_r = 0.0f;
+  glm::dmat3 local{1.0};
+  // The sky-view LUT's inputs, rounded to their steps.
+  float sky_view_r = 0.0f;
+  glm::vec3 sun_local{0.0f};
+  bool shadow = false;      // the terrain's shadow is in the frame
+  bool sky_shadow = false;  // ... and the froxels carry what it takes from the open sky
+  glm::ivec4 shaded{0};     // the sky pass's pixels: x, y, width, height
+  bool space_view = false;  // the sky pass reads the space-view LUT
+  float space_r = 0.0f;
+  glm::vec3 sun_zenith_local{0.0f};
+  glm::ivec4 disk{0};  // the sun's disk's pixels, where the passes that leave it out draw it
+};
+
 void HillaireTechnique::prepare(GpuTimer& timer) {
   glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, block_.id());
   prepared_ = true;
-  if (!settings_.reuse_passes) inputs_.forget();
-  // The three tables depend on the model alone (and on the settings, which
-  // a technique keeps for its life).
-  if (!inputs_.changed("model_luts", model_key_)) {
-    timer.reuse("transmittance_lut");
-    if (settings_.multiple) timer.reuse("multiple_scattering_lut");
-    if (settings_.multiple && settings_.multiple_scattering == MultipleScattering::kOrders) {
-      timer.reuse("forward_gain_lut");
-    }
-    return;
+  if (!settings_.reuse_passes) graph_.forget();
+  graph_.run(model_passes(), timer);
+}
+
+// The tables that depend on the model alone (and on the settings, which a
+// technique keeps for its life): all run when the model changes.
+std::vector<Pass> HillaireTechnique::model_passes() {
+  auto model = [this] { return model_key_; };
+  std::vector<Pass> passes;
+  passes.push_back({.name = "transmittance_lut", .inputs = model, .run = [this] {
+                      build_lut(programs_.transmittance, transmittance_lut_, GL_RGBA32F,
+                                shared::kTransmittanceLutWidth, shared::kTransmittanceLutHeight);
+                      glBindTextureUnit(2, transmittance_lut_.id());
+                    }});
+  if (!settings_.multiple) return passes;
+  passes.push_back({.name = "multiple_scattering_lut",
+                    .reads = {"transmittance_lut"},
+                    .inputs = model,
+                    .run = [this] { compute_multiple_scattering(); }});
+  if (settings_.multiple_scattering == MultipleScattering::kOrders) {
+    passes.push_back({.name = "forward_gain_lut", .inputs = model, .run = [this] {
+                        build_lut(programs_.forward_gain, forward_gain_lut_, GL_R32F,
+                                  shared::kForwardGainLutWidth, shared::kForwardGainLutHeight);
+                      }});
   }
+  return passes;
+}
 
-  build_lut(timer, "transmittance_lut", transmittance_program_, transmittance_lut_, GL_RGBA32F,
-            shared::kTransmittanceLutWidth, shared::kTransmittanceLutHeight);
-
-  glBindTextureUnit(2, transmittance_lut_.id());
-  if (!settings_.multiple) return;
-  timer.begin("multiple_scattering_lut");
+void HillaireTechnique::compute_multiple_scattering() {
   const int w = shared::kMultipleScatteringLutWidth, h = shared::kMultipleScatteringLutHeight;
   if (settings_.multiple_scattering == MultipleScattering::kPaper) {
-    multiple_scattering_program_.use();
-    bind_image(0, multiple_scattering_lut_.id(), GL_RGBA32F, false);
-    glDispatchCompute(groups(w), groups(h), 1);
-    glMemoryBarrier(kLutBarrier);
-  } else {
-    // Each order from the one before, on its grid: h rows of its moments
-    // and one row of E_n.
-    for (size_t k = 0; k < order_luts_.size(); ++k) {
-      const int order = int(k) + 1;
-      Program& program = k == 0 ? first_order_program_ : next_order_program_;
-      program.use();
-      if (k > 0) {
-        glUniform1i(program.uniform("u_order_number"), order);
-        glBindTextureUnit(7, order_luts_[k - 1].id());
-      }
-      bind_image(0, order_luts_[k].id(), GL_RGBA32F, false);
-      glDispatchCompute(groups(hillaire::scattering_order_width(order)),
-                        groups(hillaire::scattering_order_height(order) + 1), 1);
-      glMemoryBarrier(kLutBarrier);
+    build_lut(programs_.multiple_scattering, multiple_scattering_lut_, GL_RGBA32F, w, h);
+    return;
+  }
+  // Each order from the one before, on its grid: h rows of its moments
+  // and one row of E_n.
+  for (size_t k = 0; k < order_luts_.size(); ++k) {
+    const int order = int(k) + 1;
+    const Program& program = programs_.orders[k == 0 ? "first" : "next"];
+    program.use();
+    if (k > 0) {
+      glUniform1i(program.uniform("u_order_number"), order);
+      glBindTextureUnit(7, order_luts_[k - 1].id());
     }
-    orders_sum_program_.use();
-    for (size_t k = 0; k < order_luts_.size(); ++k) {
-      glBindTextureUnit(GLuint(9 + k), order_luts_[k].id());
-    }
-    bind_image(0, multiple_scattering_lut_.id(), GL_RGBA32F, false);
-    bind_image(1, ground_irradiance_lut_.id(), GL_RGBA32F, false);
-    glDispatchCompute(groups(w), groups(h + 1), 1);
+    bind_image(0, order_luts_[k].id(), GL_RGBA32F, false);
+    glDispatchCompute(groups(hillaire::scattering_order_width(order)),
+                      groups(hillaire::scattering_order_height(order) + 1), 1);
     glMemoryBarrier(kLutBarrier);
   }
-  timer.end();
-
-  if (settings_.multiple_scattering == MultipleScattering::kOrders) {
-    build_lut(timer, "forward_gain_lut", forward_gain_program_, forward_gain_lut_, GL_R32F,
-              shared::kForwardGainLutWidth, shared::kForwardGainLutHeight);
+  programs_.orders_sum.use();
+  for (size_t k = 0; k < order_luts_.size(); ++k) {
+    glBindTextureUnit(GLuint(9 + k), order_luts_[k].id());
   }
+  bind_image(0, multiple_scattering_lut_.id(), GL_RGBA32F, false);
+  bind_image(1, ground_irradiance_lut_.id(), GL_RGBA32F, false);
+  glDispatchCompute(groups(w), groups(h + 1), 1);
+  glMemoryBarrier(kLutBarrier);
 }
 
 void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
-  const double bottom = model_.bottom_radius, top = model_.top_radius;
-  const double r = glm::length(frame.camera_atmo);
-  const double altitude = r - bottom;
-  const double thickness = top - bottom;
+  FrameState s = frame_state(frame);
+  if (!prepared_) prepare(timer);
+  prepared_ = false;
+  if (!settings_.reuse_passes) graph_.forget();
+  glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, block_.id());
+  glBindTextureUnit(2, transmittance_lut_.id());
+  glBindTextureUnit(3, multiple_scattering_lut_.id());
+  glBindTextureUnit(8, forward_gain_lut_.id());
+  graph_.run(frame_passes(s), timer);
+}
+
+// The weight of the LUT path: by altitude, with a blend between, or forced.
+void HillaireTechnique::choose_path(double altitude) {
+  const double thickness = model_.top_radius - model_.bottom_radius;
   switch (settings_.path) {
     case Path::kLuts:
       lut_weight_ = 1.0;
@@ -293,133 +266,86 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
                                      settings_.switch_end * thickness, altitude);
       break;
   }
-  // The LUTs describe the sky seen from inside the shell; a camera below
-  // the ground is lifted onto it, as the sky pass does.
-  const double r_min = bottom + 1.0;
-  glm::dvec3 camera = frame.camera_atmo;
-  if (r < r_min) camera = r > 0.0 ? camera * (r_min / r) : glm::dvec3(0, 0, r_min);
-  const float lut_r = float(std::clamp(r, r_min, top));
+}
+
+HillaireTechnique::FrameState HillaireTechnique::frame_state(const SkyFrame& frame) {
+  const double bottom = model_.bottom_radius, top = model_.top_radius;
+  FrameState s{frame};
+  s.r = glm::length(frame.camera_atmo);
+  s.altitude = s.r - bottom;
+  choose_path(s.altitude);
+  s.r_min = bottom + 1.0;
+  s.camera = frame.camera_atmo;
+  if (s.r < s.r_min) s.camera = s.r > 0.0 ? s.camera * (s.r_min / s.r) : glm::dvec3(0, 0, s.r_min);
+  s.lut_r = float(std::clamp(s.r, s.r_min, top));
   // Not out to the horizon, though the march past the froxels is most of
   // the sky's time from a few km up: spread that far, the froxels' slices
   // left the surfaces up to 6 % off the converged march, against 2 %
   // (scripts/aerial_range.sh; docs/techniques/hillaire.md#the-aerial-perspectives-range).
-  aerial_range_ = std::max(settings_.aerial_range, 4.0 * altitude);
-  const glm::dvec3 sun(frame.sun_dir_atmo);
-  const glm::dmat3 local = local_from_atmo(camera, sun);
-  // The sky-view LUT's inputs: the altitude and the sun's zenith angle in
-  // the camera's local frame (the LUT puts the sun at azimuth 0), rounded
-  // to their steps. The sky pass maps its directions with the same rounded
-  // altitude, so that LUT and lookup agree.
-  const double lut_altitude = double(lut_r) - bottom;
+  aerial_range_ = std::max(settings_.aerial_range, 4.0 * s.altitude);
+  s.local = local_from_atmo(s.camera, glm::dvec3(frame.sun_dir_atmo));
+  round_sky_view_inputs(s);
+  s.shadow = settings_.terrain_shadows && frame.terrain_shadow.active();
+  s.sky_shadow = sky_shadow(s);
+  bound_shaded_pixels(s);
+  return s;
+}
+
+// The sky-view LUT's inputs: the altitude and the sun's zenith angle in the
+// camera's local frame (the LUT puts the sun at azimuth 0), rounded to
+// their steps. The sky pass maps its directions with the same rounded
+// altitude, so that LUT and lookup agree.
+void HillaireTechnique::round_sky_view_inputs(FrameState& s) {
+  const double bottom = model_.bottom_radius, top = model_.top_radius;
+  const glm::dvec3 sun(s.frame.sun_dir_atmo);
+  const double lut_altitude = double(s.lut_r) - bottom;
   const bool rounded = settings_.reuse_passes;
   sky_view_altitude_ = std::exp2(quantize(
       std::log2(lut_altitude), rounded ? settings_.sky_view_log2_altitude_step : 0.0));
-  const float sky_view_r =
-      rounded ? float(std::clamp(bottom + sky_view_altitude_, double(r_min), top)) : lut_r;
+  s.sky_view_r =
+      rounded ? float(std::clamp(bottom + sky_view_altitude_, double(s.r_min), top)) : s.lut_r;
   sky_view_sun_zenith_ =
-      quantize(std::acos(std::clamp((local * sun).z, -1.0, 1.0)),
+      quantize(std::acos(std::clamp((s.local * sun).z, -1.0, 1.0)),
                rounded ? glm::radians(settings_.sky_view_sun_zenith_step_deg) : 0.0);
-  const glm::vec3 sun_local =
-      rounded ? glm::vec3(float(std::sin(sky_view_sun_zenith_)), 0.0f,
-                          float(std::cos(sky_view_sun_zenith_)))
-              : glm::vec3(local * sun);
+  s.sun_local = rounded ? glm::vec3(float(std::sin(sky_view_sun_zenith_)), 0.0f,
+                                    float(std::cos(sky_view_sun_zenith_)))
+                        : glm::vec3(s.local * sun);
+}
 
-  if (!prepared_) prepare(timer);
-  prepared_ = false;
-  if (!settings_.reuse_passes) inputs_.forget();
-  glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, block_.id());
-  glBindTextureUnit(2, transmittance_lut_.id());
-  glBindTextureUnit(3, multiple_scattering_lut_.id());
-  glBindTextureUnit(8, forward_gain_lut_.id());
-
-  // No sky-view LUT and no froxels where the per-pixel path draws alone
-  // (high up, deep space): a frame models no more than it shows.
-  if (lut_weight_ > 0.0 &&
-      inputs_.changed("sky_view_lut", PassKey(model_key_).add(sky_view_r).add(sun_local))) {
-    timer.begin("sky_view_lut");
-    sky_view_program_.use();
-    glUniform1f(sky_view_program_.uniform("u_camera_r"), sky_view_r);
-    glUniform3fv(sky_view_program_.uniform("u_sun_dir_local"), 1, glm::value_ptr(sun_local));
-    bind_image(0, sky_view_lut_.id(), GL_RGBA16F, false);
-    // Half the columns: each is written to its mirror image too.
-    static_assert(shared::kSkyViewLutWidth % 2 == 0, "the sky view's columns pair off");
-    glDispatchCompute(groups(shared::kSkyViewLutWidth / 2), groups(shared::kSkyViewLutHeight), 1);
-    glMemoryBarrier(kLutBarrier);
-    timer.end();
-  } else if (lut_weight_ > 0.0) {
-    timer.reuse("sky_view_lut");
+// With the terrain's shadow, the froxels also carry the sunlight it takes
+// from the open sky, which the sky-view LUT knows nothing of, unless no
+// ray can pass through a shadow: the camera above the highest shadow, and
+// no ray of the frame pointing down (an upward ray only climbs).
+bool HillaireTechnique::sky_shadow(const FrameState& s) const {
+  const SkyFrame& frame = s.frame;
+  if (!s.shadow || lut_weight_ <= 0.0) return false;
+  if (!frame.view_pruning ||
+      s.altitude <= double(frame.terrain_shadow.highest) + kTerrainShadowSoftness) {
+    return true;
   }
-
-  // The froxels serve surfaces within their range only; none nearer than
-  // it, none to compute. The drawn tiles' bound answers cheaply from high
-  // up; near the ground, where a tile's bound holds the camera, the depth
-  // of the pixels does.
-  const glm::vec3 camera_f(camera);
-  // With the terrain's shadow, the froxels also carry the sunlight it takes
-  // from the open sky, which the sky-view LUT knows nothing of, unless no
-  // ray can pass through a shadow: the camera above the highest shadow,
-  // and no ray of the frame pointing down (an upward ray only climbs).
-  const bool shadow = settings_.terrain_shadows && frame.terrain_shadow.active();
-  bool sky_shadow = shadow && lut_weight_ > 0.0;
-  if (sky_shadow && frame.view_pruning &&
-      altitude > double(frame.terrain_shadow.highest) + kTerrainShadowSoftness) {
-    const glm::vec3 up(camera / glm::length(camera));
-    bool downward = false;
-    for (float x : {-1.0f, 1.0f}) {
-      for (float y : {-1.0f, 1.0f}) {
-        downward = downward || glm::dot(frame.atmo_ray_from_ndc * glm::vec3(x, y, 1.0f), up) < 0.0f;
-      }
+  const glm::vec3 up(s.camera / glm::length(s.camera));
+  bool downward = false;
+  for (float x : {-1.0f, 1.0f}) {
+    for (float y : {-1.0f, 1.0f}) {
+      downward = downward || glm::dot(frame.atmo_ray_from_ndc * glm::vec3(x, y, 1.0f), up) < 0.0f;
     }
-    sky_shadow = downward;
   }
-  const bool froxels_needed =
-      lut_weight_ > 0.0 &&
-      (sky_shadow || !frame.view_pruning ||
-       (frame.nearest_surface <= aerial_range_ &&
-       (frame.depth_texture == 0 ||
-        surface_probe_.any_nearer(frame.depth_texture, frame.width, frame.height, frame.near,
-                                  float(aerial_range_) / frame.atmo_scale_min))));
-  if (froxels_needed &&
-      !inputs_.changed("aerial_perspective", PassKey(model_key_)
-                                                 .add(camera_f)
-                                                 .add(frame.atmo_ray_from_ndc)
-                                                 .add(frame.sun_dir_atmo)
-                                                 .add(float(aerial_range_))
-                                                 .add(shadow)
-                                                 .add(shadow ? frame.terrain_shadow.version : 0)
-                                                 .add(shadow ? frame.terrain_shadow.strength
-                                                             : 0.0f))) {
-    timer.reuse("aerial_perspective");
-  } else if (froxels_needed) {
-    timer.begin("aerial_perspective");
-    aerial_program_.use();
-    glUniform3fv(aerial_program_.uniform("u_camera"), 1, glm::value_ptr(camera_f));
-    glUniformMatrix3fv(aerial_program_.uniform("u_ray_from_ndc"), 1, GL_FALSE,
-                       glm::value_ptr(frame.atmo_ray_from_ndc));
-    glUniform3fv(aerial_program_.uniform("u_sun_dir"), 1, glm::value_ptr(frame.sun_dir_atmo));
-    glUniform1f(aerial_program_.uniform("u_range"), float(aerial_range_));
-    bind_image(0, aerial_scattering_.id(), GL_RGBA16F, true);
-    bind_image(1, aerial_transmittance_.id(), GL_RGBA16F, true);
-    if (settings_.terrain_shadows) {
-      bind_image(2, aerial_shadow_loss_.id(), GL_RGBA16F, true);
-      bind_terrain_shadow(aerial_program_, frame.terrain_shadow);
-    }
-    glDispatchCompute(groups(shared::kAerialPerspectiveSize),
-                      groups(shared::kAerialPerspectiveSize), 1);
-    glMemoryBarrier(kLutBarrier);
-    timer.end();
-  }
+  return downward;
+}
 
-  // From outside the shell, on the per-pixel path alone, the sky pass
-  // shades only the pixels within the shell's screen bound (with a pixel to
-  // spare on each side); the others see space, drawn by a pass that costs
-  // next to nothing and writes what the sky pass would have.
+// From outside the shell, on the per-pixel path alone, the sky pass shades
+// only the pixels within the shell's screen bound (with a pixel to spare
+// on each side); the others see space, drawn by a pass that costs next to
+// nothing and writes what the sky pass would have.
+void HillaireTechnique::bound_shaded_pixels(FrameState& s) {
+  const SkyFrame& frame = s.frame;
+  const double top = model_.top_radius;
   const int w = frame.width, h = frame.height;
-  glm::ivec4 shaded(0, 0, w, h);  // x, y, width, height
+  s.shaded = glm::ivec4(0, 0, w, h);
   if (lut_weight_ == 0.0) {
     if (auto bound = sphere_ndc_bound(-frame.camera_atmo, top,
                                       glm::dmat3(frame.atmo_ray_from_ndc))) {
-      shaded = pixel_rect(*bound, w, h, 2);
+      s.shaded = pixel_rect(*bound, w, h, 2);
     }
   }
   // There, the space-view LUT for the camera's distance and the sun's
@@ -428,242 +354,343 @@ void HillaireTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   // stands a kilometre clear of the top, where every ray that meets the
   // shell enters it ahead of the camera. The bound decides it with or
   // without pruning, so that pruning changes no pixel.
-  const bool space_view = settings_.space_view_lut && lut_weight_ == 0.0 && !shadow &&
-                          r > top + 1e3 &&
-                          double(shaded.z) * double(shaded.w) >= settings_.space_view_min_pixels;
-  used_space_view_ = space_view;
-  if (!frame.view_pruning) shaded = glm::ivec4(0, 0, w, h);
-  const float space_r = float(r);
-  const double sun_z = std::clamp((local * sun).z, -1.0, 1.0);
-  const glm::vec3 sun_zenith_local(float(std::sqrt(1.0 - sun_z * sun_z)), 0.0f, float(sun_z));
-  if (space_view && inputs_.changed("space_view_lut", PassKey(model_key_)
-                                                          .add(space_r)
-                                                          .add(sun_zenith_local)
-                                                          .add(frame.ground_heights))) {
-    timer.begin("space_view_lut");
-    if (!space_view_program_) {
-      space_view_program_ = Program::compute(
-          "atmosphere/gpu/hillaire/space_view_lut.comp",
-          view_defines(settings_, fmt::format("SPACE_VIEW_STEPS {}", settings_.space_view_steps)));
-    }
-    space_view_program_->use();
-    glUniform1f(space_view_program_->uniform("u_camera_r"), space_r);
-    glUniform3fv(space_view_program_->uniform("u_sun_dir_local"), 1,
-                 glm::value_ptr(sun_zenith_local));
-    glUniform2fv(space_view_program_->uniform("u_ground"), 1,
-                 glm::value_ptr(frame.ground_heights));
-    bind_image(0, space_open_sky_.id(), GL_RGBA32F, false);
-    bind_image(1, space_scattering_.id(), GL_RGBA16F, true);
-    bind_image(2, space_transmittance_.id(), GL_RGBA16F, true);
-    glDispatchCompute(groups(shared::kSpaceViewLutWidth), groups(shared::kSpaceViewLutHeight), 1);
-    glMemoryBarrier(kLutBarrier);
-    timer.end();
-  } else if (space_view) {
-    timer.reuse("space_view_lut");
-  }
-  shaded_fraction_ = double(shaded.z) * double(shaded.w) / (double(w) * double(h));
+  s.space_view = settings_.space_view_lut && lut_weight_ == 0.0 && !s.shadow && s.r > top + 1e3 &&
+                 double(s.shaded.z) * double(s.shaded.w) >= settings_.space_view_min_pixels;
+  used_space_view_ = s.space_view;
+  if (!frame.view_pruning) s.shaded = glm::ivec4(0, 0, w, h);
+  s.space_r = float(s.r);
+  const double sun_z = std::clamp((s.local * glm::dvec3(frame.sun_dir_atmo)).z, -1.0, 1.0);
+  s.sun_zenith_local = glm::vec3(float(std::sqrt(1.0 - sun_z * sun_z)), 0.0f, float(sun_z));
+  shaded_fraction_ = double(s.shaded.z) * double(s.shaded.w) / (double(w) * double(h));
   // The sun's disk's screen bound (that of a sphere at a distance of 1
-  // along the sun that it fills), where the passes that leave the disk out
-  // draw it again.
-  const std::optional<NdcRect> sun_bound = sphere_ndc_bound(
-      glm::dvec3(frame.sun_dir_atmo), std::sin(model_.sun_angular_radius),
-      glm::dmat3(frame.atmo_ray_from_ndc));
-  const glm::ivec4 disk = sun_bound ? pixel_rect(*sun_bound, w, h, 2) : glm::ivec4(0);
-  if (shaded_fraction_ < 1.0) {
-    timer.begin("space");
-    // The bands around the shaded rectangle (below, above, left, right)
-    // without the sun's disk, then the disk's bound with it; the sky pass
-    // then draws the shaded rectangle over whatever of it lay there.
-    const glm::ivec4 bands[4] = {{0, 0, w, shaded.y},
-                                 {0, shaded.y + shaded.w, w, h - shaded.y - shaded.w},
-                                 {0, shaded.y, shaded.x, shaded.w},
-                                 {shaded.x + shaded.z, shaded.y, w - shaded.x - shaded.z, shaded.w}};
-    auto begin_space = [&](const Program& program) {
-      sky_pass_.begin(frame.target_framebuffer, w, h, program);
-      glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, block_.id());
-      glBindTextureUnit(0, frame.depth_texture);
-      glBindTextureUnit(1, frame.surface_texture);
-      glUniform3fv(program.uniform("u_camera"), 1, glm::value_ptr(glm::vec3(frame.camera_atmo)));
-      glUniformMatrix3fv(program.uniform("u_ray_from_ndc"), 1, GL_FALSE,
-                         glm::value_ptr(frame.atmo_ray_from_ndc));
-      glUniform3fv(program.uniform("u_sun_dir"), 1, glm::value_ptr(frame.sun_dir_atmo));
-      glUniform1f(program.uniform("u_near"), frame.near);
-    };
-    auto draw_within = [&](const glm::ivec4& rect) {
-      if (rect.z <= 0 || rect.w <= 0) return;
-      glScissor(rect.x, rect.y, rect.z, rect.w);
-      sky_pass_.draw();
-    };
-    glEnable(GL_SCISSOR_TEST);
-    begin_space(space_unlit_program_);
-    for (const glm::ivec4& band : bands) draw_within(band);
-    if (disk.z > 0 && disk.w > 0) {
-      begin_space(space_program_);
-      draw_within(disk);
-    }
-    glDisable(GL_SCISSOR_TEST);
-    timer.end();
-  }
-  if (shaded.z <= 0 || shaded.w <= 0) return;
+  // along the sun that it fills).
+  const std::optional<NdcRect> sun_bound =
+      sphere_ndc_bound(glm::dvec3(frame.sun_dir_atmo), std::sin(model_.sun_angular_radius),
+                       glm::dmat3(frame.atmo_ray_from_ndc));
+  s.disk = sun_bound ? pixel_rect(*sun_bound, w, h, 2) : glm::ivec4(0);
+}
 
-  timer.begin("sky");
-  // Binds the sky pass's inputs for `program` (hillaire_sky.frag).
-  auto begin_sky = [&](const Program& program) {
-    sky_pass_.begin(frame.target_framebuffer, w, h, program);
-    glBindTextureUnit(0, frame.depth_texture);
-    glBindTextureUnit(1, frame.surface_texture);
-    glBindTextureUnit(SkyFrame::kGroundBelowUnit, frame.ground_below_texture);
-    glBindTextureUnit(4, sky_view_lut_.id());
-    glBindTextureUnit(5, aerial_scattering_.id());
-    glBindTextureUnit(6, aerial_transmittance_.id());
-    glUniform3fv(program.uniform("u_camera"), 1, glm::value_ptr(glm::vec3(frame.camera_atmo)));
-    glUniform1f(program.uniform("u_camera_r"), lut_r);
-    glUniform1f(program.uniform("u_sky_view_r"), sky_view_r);
-    glUniformMatrix3fv(program.uniform("u_ray_from_ndc"), 1, GL_FALSE,
-                       glm::value_ptr(frame.atmo_ray_from_ndc));
-    glUniform3fv(program.uniform("u_sun_dir"), 1, glm::value_ptr(frame.sun_dir_atmo));
-    glUniform1f(program.uniform("u_near"), frame.near);
-    glUniform2f(program.uniform("u_viewport"), float(frame.width), float(frame.height));
-    glUniformMatrix3fv(program.uniform("u_local_from_atmo"), 1, GL_FALSE,
-                       glm::value_ptr(glm::mat3(local)));
-    glUniform1f(program.uniform("u_lut_weight"), float(lut_weight_));
-    glUniform1f(program.uniform("u_aerial_range"), float(aerial_range_));
-    if (settings_.terrain_shadows) {
-      bind_terrain_shadow(program, frame.terrain_shadow);
-      glBindTextureUnit(kShadowLossUnit, aerial_shadow_loss_.id());
-      glUniform1f(program.uniform("u_shadow_loss_weight"), sky_shadow ? 1.0f : 0.0f);
-    }
-  };
-  // The open sky and the surfaces apart, each by a program that serves it
-  // alone (hillaire_sky.frag's OPEN_SKY_ONLY and SURFACE_ONLY), held by the
-  // stencil that a classifying pass sets to 1 under the surfaces; the
-  // stencil was cleared for the frame. bind(program) binds what the two
-  // programs read besides begin_sky's.
-  auto draw_by_kind = [&](const Program& open_sky, const Program& surfaces, auto bind) {
-    // The classifying pass reads the depth alone.
-    sky_pass_.begin(frame.target_framebuffer, w, h, sky_classify_program_);
-    glBindTextureUnit(0, frame.depth_texture);
-    glEnable(GL_STENCIL_TEST);
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    glStencilFunc(GL_ALWAYS, 1, 0xff);
-    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-    sky_pass_.draw();
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-    for (const auto& [program, held] : {std::pair{&open_sky, 0}, std::pair{&surfaces, 1}}) {
-      begin_sky(*program);
-      bind(*program);
-      glEnable(GL_STENCIL_TEST);
-      glStencilFunc(GL_EQUAL, held, 0xff);
-      sky_pass_.draw();
-    }
-    glDisable(GL_STENCIL_TEST);
-  };
-  if (lut_weight_ < 1.0 || !frame.view_pruning) {
-    // With pruning, a frame on the per-pixel path alone takes the shader
-    // without the LUT path (hillaire_sky.frag), for grey Mie with a single
-    // read of the glow's gain, and without the terrain's shadow where the
-    // frame has none (from above kTerrainShadowTop, as every such frame
-    // on Earth and Mars is): the march's sums come out in another order,
-    // a few of a float's last bits off (PassReuseGLTest); in six pairs of
-    // alternate runs its sky pass ran under the brute force 5.14-5.54x
-    // from 400 km (4.59-5.55x with the shadow compiled in) and 5.28-6.13x
-    // from 40 000 km (5.45-5.73x).
-    if (shaded_fraction_ < 1.0) {
-      glEnable(GL_SCISSOR_TEST);
-      glScissor(shaded.x, shaded.y, shaded.z, shaded.w);
-    }
-    if (space_view) {
-      // The open sky reads the table's whole rays and the lit ground, the
-      // surfaces its slices.
-      const char* const kinds[2] = {"OPEN_SKY_ONLY 1", "SURFACE_ONLY 1"};
-      for (size_t k = 0; k < 2; ++k) {
-        if (!sky_space_view_programs_[k]) {
-          sky_space_view_programs_[k] = sky_program(
-              settings_, "gl/shaders/fullscreen.vert", {"NO_LUT 1", "SPACE_VIEW_LUT 1", kinds[k]},
-              false);
-        }
-      }
-      draw_by_kind(*sky_space_view_programs_[0], *sky_space_view_programs_[1],
-                   [&](const Program& program) {
-                     glBindTextureUnit(kSpaceOpenSkyUnit, space_open_sky_.id());
-                     glBindTextureUnit(kSpaceOpenSkyUnit + 1, space_scattering_.id());
-                     glBindTextureUnit(kSpaceOpenSkyUnit + 2, space_transmittance_.id());
-                     glUniform1f(program.uniform("u_space_r"), space_r);
-                     glUniform2fv(program.uniform("u_ground_heights"), 1,
-                                  glm::value_ptr(frame.ground_heights));
-                   });
-    } else if (frame.view_pruning && lut_weight_ == 0.0) {
-      std::optional<Program>& space = sky_space_programs_[(grey_mie_ ? 1 : 0) + (shadow ? 2 : 0)];
-      if (!space) {
-        std::vector<std::string> parts = {"NO_LUT 1"};
-        if (grey_mie_) parts.push_back("GREY_MIE 1");
-        space = sky_program(settings_, "gl/shaders/fullscreen.vert", parts, shadow);
-      }
-      begin_sky(*space);
-      sky_pass_.draw();
-    } else {
-      begin_sky(sky_program_);
-      sky_pass_.draw();
-    }
-    glDisable(GL_SCISSOR_TEST);
-  } else {
-    // Every pixel without the march and the sun's disk (the open sky and
-    // the surfaces apart: draw_by_kind), then the march's tiles (see
-    // hillaire_sky.frag): an 8 x 8 tile with a surface past the froxels'
-    // blend, listed on the GPU and drawn as one quad each; then
-    // the pixels of the sun's disk. The disk's bound is that of a sphere
-    // at a distance of 1 along the sun that it fills. A camera lifted onto
-    // the bottom sphere raises the rays under its horizon
-    // (lifted_horizon.glsl), which may carry the disk out of its bound:
-    // there the first part keeps the disk, with a metre to spare for the
-    // shader's float |camera| (half a metre a step at Earth's radius).
-    const bool lifted = r < r_min + 1.0;
-    if (lifted && !sky_unmarched_sun_program_) {
-      sky_unmarched_sun_program_ =
-          sky_program(settings_, "gl/shaders/fullscreen.vert", {"NO_MARCH 1"});
-    }
-    if (lifted) {
-      begin_sky(*sky_unmarched_sun_program_);
-      sky_pass_.draw();
-    } else {
-      draw_by_kind(sky_open_program_, sky_surface_program_, [](const Program&) {});
-    }
-    const int tiles_x = (w + kMarchTile - 1) / kMarchTile;
-    const int tiles_y = (h + kMarchTile - 1) / kMarchTile;
-    const size_t tiles = size_t(tiles_x) * size_t(tiles_y);
-    const size_t bytes = (4 + 2 * tiles) * sizeof(GLuint);
-    if (bytes > march_tiles_bytes_) {
-      march_tiles_ = make_buffer(bytes, nullptr);
-      march_tiles_bytes_ = bytes;
-    }
-    const GLuint command[4] = {6, 0, 0, 0};  // six vertices a tile, no tiles yet
-    glNamedBufferSubData(march_tiles_.id(), 0, sizeof(command), command);
-    march_tiles_program_.use();
-    glBindTextureUnit(0, frame.depth_texture);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMarchTilesBinding, march_tiles_.id());
-    glUniformMatrix3fv(march_tiles_program_.uniform("u_ray_from_ndc"), 1, GL_FALSE,
-                       glm::value_ptr(frame.atmo_ray_from_ndc));
-    glUniform1f(march_tiles_program_.uniform("u_near"), frame.near);
-    glUniform2f(march_tiles_program_.uniform("u_viewport"), float(w), float(h));
-    // Where hillaire_sky.frag's blend from the froxels to the march begins.
-    glUniform1f(march_tiles_program_.uniform("u_blend_start"), float(0.8 * aerial_range_));
-    glDispatchCompute(groups(tiles_x), groups(tiles_y), 1);
-    glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
-    begin_sky(sky_tiles_program_);
-    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMarchTilesBinding, march_tiles_.id());
-    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, march_tiles_.id());
-    sky_pass_.draw_indirect();
-    glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
-    if (!lifted && disk.z > 0 && disk.w > 0) {
-      begin_sky(sky_program_);
-      glEnable(GL_SCISSOR_TEST);
-      glScissor(disk.x, disk.y, disk.z, disk.w);
-      sky_pass_.draw();
-      glDisable(GL_SCISSOR_TEST);
-    }
+// No sky-view LUT and no froxels where the per-pixel path draws alone
+// (high up, deep space): a frame models no more than it shows.
+std::vector<Pass> HillaireTechnique::frame_passes(FrameState& s) {
+  std::vector<Pass> passes;
+  passes.push_back(
+      {.name = "sky_view_lut",
+       .needed = [this] { return lut_weight_ > 0.0; },
+       .inputs = [this, &s] { return PassKey(model_key_).add(s.sky_view_r).add(s.sun_local); },
+       .run = [this, &s] { compute_sky_view_lut(s); }});
+  passes.push_back({.name = "aerial_perspective",
+                    .needed = [this, &s] { return froxels_needed(s); },
+                    .inputs = [this, &s] { return froxel_inputs(s); },
+                    .run = [this, &s] { compute_aerial_perspective(s); }});
+  passes.push_back({.name = "space_view_lut",
+                    .needed = [&s] { return s.space_view; },
+                    .inputs =
+                        [this, &s] {
+                          return PassKey(model_key_)
+                              .add(s.space_r)
+                              .add(s.sun_zenith_local)
+                              .add(s.frame.ground_heights);
+                        },
+                    .run = [this, &s] { compute_space_view_lut(s); }});
+  passes.push_back({.name = "space",
+                    .needed = [this] { return shaded_fraction_ < 1.0; },
+                    .run = [this, &s] { draw_space(s); }});
+  // Over what the space pass drew, within the shaded rectangle.
+  passes.push_back({.name = "sky",
+                    .reads = {"sky_view_lut", "aerial_perspective", "space_view_lut", "space"},
+                    .needed = [&s] { return s.shaded.z > 0 && s.shaded.w > 0; },
+                    .run = [this, &s] { draw_sky(s); }});
+  return passes;
+}
+
+void HillaireTechnique::compute_sky_view_lut(const FrameState& s) {
+  const Program& program = programs_.sky_view;
+  program.use();
+  glUniform1f(program.uniform("u_camera_r"), s.sky_view_r);
+  glUniform3fv(program.uniform("u_sun_dir_local"), 1, glm::value_ptr(s.sun_local));
+  bind_image(0, sky_view_lut_.id(), GL_RGBA16F, false);
+  // Half the columns: each is written to its mirror image too.
+  static_assert(shared::kSkyViewLutWidth % 2 == 0, "the sky view's columns pair off");
+  glDispatchCompute(groups(shared::kSkyViewLutWidth / 2), groups(shared::kSkyViewLutHeight), 1);
+  glMemoryBarrier(kLutBarrier);
+}
+
+// The froxels serve surfaces within their range only; none nearer than
+// it, none to compute. The drawn tiles' bound answers cheaply from high
+// up; near the ground, where a tile's bound holds the camera, the depth
+// of the pixels does.
+bool HillaireTechnique::froxels_needed(const FrameState& s) {
+  const SkyFrame& frame = s.frame;
+  return lut_weight_ > 0.0 &&
+         (s.sky_shadow || !frame.view_pruning ||
+          (frame.nearest_surface <= aerial_range_ &&
+           (frame.depth_texture == 0 ||
+            surface_probe_.any_nearer(frame.depth_texture, frame.width, frame.height, frame.near,
+                                      float(aerial_range_) / frame.atmo_scale_min))));
+}
+
+PassKey HillaireTechnique::froxel_inputs(const FrameState& s) const {
+  const SkyFrame& frame = s.frame;
+  return PassKey(model_key_)
+      .add(glm::vec3(s.camera))
+      .add(frame.atmo_ray_from_ndc)
+      .add(frame.sun_dir_atmo)
+      .add(float(aerial_range_))
+      .add(s.shadow)
+      .add(s.shadow ? frame.terrain_shadow.version : 0)
+      .add(s.shadow ? frame.terrain_shadow.strength : 0.0f);
+}
+
+void HillaireTechnique::compute_aerial_perspective(const FrameState& s) {
+  const SkyFrame& frame = s.frame;
+  const Program& program = programs_.aerial;
+  program.use();
+  glUniform3fv(program.uniform("u_camera"), 1, glm::value_ptr(glm::vec3(s.camera)));
+  glUniformMatrix3fv(program.uniform("u_ray_from_ndc"), 1, GL_FALSE,
+                     glm::value_ptr(frame.atmo_ray_from_ndc));
+  glUniform3fv(program.uniform("u_sun_dir"), 1, glm::value_ptr(frame.sun_dir_atmo));
+  glUniform1f(program.uniform("u_range"), float(aerial_range_));
+  bind_image(0, aerial_scattering_.id(), GL_RGBA16F, true);
+  bind_image(1, aerial_transmittance_.id(), GL_RGBA16F, true);
+  if (settings_.terrain_shadows) {
+    bind_image(2, aerial_shadow_loss_.id(), GL_RGBA16F, true);
+    bind_terrain_shadow(program, frame.terrain_shadow);
   }
-  timer.end();
+  glDispatchCompute(groups(shared::kAerialPerspectiveSize), groups(shared::kAerialPerspectiveSize),
+                    1);
+  glMemoryBarrier(kLutBarrier);
+}
+
+void HillaireTechnique::compute_space_view_lut(const FrameState& s) {
+  const Program& program = programs_.space_view["space_view_lut"];
+  program.use();
+  glUniform1f(program.uniform("u_camera_r"), s.space_r);
+  glUniform3fv(program.uniform("u_sun_dir_local"), 1, glm::value_ptr(s.sun_zenith_local));
+  glUniform2fv(program.uniform("u_ground"), 1, glm::value_ptr(s.frame.ground_heights));
+  bind_image(0, space_open_sky_.id(), GL_RGBA32F, false);
+  bind_image(1, space_scattering_.id(), GL_RGBA16F, true);
+  bind_image(2, space_transmittance_.id(), GL_RGBA16F, true);
+  glDispatchCompute(groups(shared::kSpaceViewLutWidth), groups(shared::kSpaceViewLutHeight), 1);
+  glMemoryBarrier(kLutBarrier);
+}
+
+void HillaireTechnique::begin_space(const Program& program, const FrameState& s) {
+  const SkyFrame& frame = s.frame;
+  sky_pass_.begin(frame.target_framebuffer, frame.width, frame.height, program);
+  glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, block_.id());
+  glBindTextureUnit(0, frame.depth_texture);
+  glBindTextureUnit(1, frame.surface_texture);
+  glUniform3fv(program.uniform("u_camera"), 1, glm::value_ptr(glm::vec3(frame.camera_atmo)));
+  glUniformMatrix3fv(program.uniform("u_ray_from_ndc"), 1, GL_FALSE,
+                     glm::value_ptr(frame.atmo_ray_from_ndc));
+  glUniform3fv(program.uniform("u_sun_dir"), 1, glm::value_ptr(frame.sun_dir_atmo));
+  glUniform1f(program.uniform("u_near"), frame.near);
+}
+
+// The bands around the shaded rectangle (below, above, left, right)
+// without the sun's disk, then the disk's bound with it; the sky pass then
+// draws the shaded rectangle over whatever of it lay there.
+void HillaireTechnique::draw_space(const FrameState& s) {
+  const int w = s.frame.width, h = s.frame.height;
+  const glm::ivec4& shaded = s.shaded;
+  const glm::ivec4 bands[4] = {{0, 0, w, shaded.y},
+                               {0, shaded.y + shaded.w, w, h - shaded.y - shaded.w},
+                               {0, shaded.y, shaded.x, shaded.w},
+                               {shaded.x + shaded.z, shaded.y, w - shaded.x - shaded.z, shaded.w}};
+  auto draw_within = [&](const glm::ivec4& rect) {
+    if (rect.z <= 0 || rect.w <= 0) return;
+    glScissor(rect.x, rect.y, rect.z, rect.w);
+    sky_pass_.draw();
+  };
+  glEnable(GL_SCISSOR_TEST);
+  begin_space(programs_.space["unlit"], s);
+  for (const glm::ivec4& band : bands) draw_within(band);
+  if (s.disk.z > 0 && s.disk.w > 0) {
+    begin_space(programs_.space["lit"], s);
+    draw_within(s.disk);
+  }
+  glDisable(GL_SCISSOR_TEST);
+}
+
+// Binds the sky pass's inputs for `program` (hillaire_sky.frag).
+void HillaireTechnique::begin_sky(const Program& program, const FrameState& s) {
+  const SkyFrame& frame = s.frame;
+  sky_pass_.begin(frame.target_framebuffer, frame.width, frame.height, program);
+  glBindTextureUnit(0, frame.depth_texture);
+  glBindTextureUnit(1, frame.surface_texture);
+  glBindTextureUnit(SkyFrame::kGroundBelowUnit, frame.ground_below_texture);
+  glBindTextureUnit(4, sky_view_lut_.id());
+  glBindTextureUnit(5, aerial_scattering_.id());
+  glBindTextureUnit(6, aerial_transmittance_.id());
+  glUniform3fv(program.uniform("u_camera"), 1, glm::value_ptr(glm::vec3(frame.camera_atmo)));
+  glUniform1f(program.uniform("u_camera_r"), s.lut_r);
+  glUniform1f(program.uniform("u_sky_view_r"), s.sky_view_r);
+  glUniformMatrix3fv(program.uniform("u_ray_from_ndc"), 1, GL_FALSE,
+                     glm::value_ptr(frame.atmo_ray_from_ndc));
+  glUniform3fv(program.uniform("u_sun_dir"), 1, glm::value_ptr(frame.sun_dir_atmo));
+  glUniform1f(program.uniform("u_near"), frame.near);
+  glUniform2f(program.uniform("u_viewport"), float(frame.width), float(frame.height));
+  glUniformMatrix3fv(program.uniform("u_local_from_atmo"), 1, GL_FALSE,
+                     glm::value_ptr(glm::mat3(s.local)));
+  glUniform1f(program.uniform("u_lut_weight"), float(lut_weight_));
+  glUniform1f(program.uniform("u_aerial_range"), float(aerial_range_));
+  if (settings_.terrain_shadows) {
+    bind_terrain_shadow(program, frame.terrain_shadow);
+    glBindTextureUnit(kShadowLossUnit, aerial_shadow_loss_.id());
+    glUniform1f(program.uniform("u_shadow_loss_weight"), s.sky_shadow ? 1.0f : 0.0f);
+  }
+}
+
+// The open sky and the surfaces apart, each by a program that serves it
+// alone (hillaire_sky.frag's OPEN_SKY_ONLY and SURFACE_ONLY), held by the
+// stencil that a classifying pass sets to 1 under the surfaces; the
+// stencil was cleared for the frame. bind(program) binds what the two
+// programs read besides begin_sky's.
+void HillaireTechnique::draw_by_kind(const Program& open_sky, const Program& surfaces,
+                                     const FrameState& s,
+                                     const std::function<void(const Program&)>& bind) {
+  const SkyFrame& frame = s.frame;
+  // The classifying pass reads the depth alone.
+  sky_pass_.begin(frame.target_framebuffer, frame.width, frame.height, programs_.sky["classify"]);
+  glBindTextureUnit(0, frame.depth_texture);
+  glEnable(GL_STENCIL_TEST);
+  glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+  glStencilFunc(GL_ALWAYS, 1, 0xff);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  sky_pass_.draw();
+  glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+  for (const auto& [program, held] : {std::pair{&open_sky, 0}, std::pair{&surfaces, 1}}) {
+    begin_sky(*program, s);
+    bind(*program);
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_EQUAL, held, 0xff);
+    sky_pass_.draw();
+  }
+  glDisable(GL_STENCIL_TEST);
+}
+
+void HillaireTechnique::draw_sky(const FrameState& s) {
+  const SkyFrame& frame = s.frame;
+  if (lut_weight_ == 1.0 && frame.view_pruning) {
+    // The LUT path alone: in parts for a software rasteriser, whole for
+    // a GPU.
+    if (schedule_ == Schedule::kSoftware) {
+      draw_sky_in_parts(s);
+    } else {
+      begin_sky(programs_.sky["whole"], s);
+      sky_pass_.draw();
+    }
+    return;
+  }
+  // With pruning, a frame on the per-pixel path alone takes the shader
+  // without the LUT path (hillaire_sky.frag), for grey Mie with a single
+  // read of the glow's gain, and without the terrain's shadow where the
+  // frame has none (from above kTerrainShadowTop, as every such frame
+  // on Earth and Mars is): the march's sums come out in another order,
+  // a few of a float's last bits off (PassReuseGLTest); in six pairs of
+  // alternate runs its sky pass ran under the brute force 5.14-5.54x
+  // from 400 km (4.59-5.55x with the shadow compiled in) and 5.28-6.13x
+  // from 40 000 km (5.45-5.73x). The plain schedule draws the whole
+  // shader there, as a GPU runs only the side of a branch it takes.
+  if (shaded_fraction_ < 1.0) {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(s.shaded.x, s.shaded.y, s.shaded.z, s.shaded.w);
+  }
+  if (s.space_view) {
+    draw_space_view_sky(s);
+  } else if (frame.view_pruning && lut_weight_ == 0.0 && schedule_ == Schedule::kSoftware) {
+    begin_sky(programs_.sky[per_pixel_sky_variant(grey_mie_, s.shadow)], s);
+    sky_pass_.draw();
+  } else {
+    begin_sky(programs_.sky["whole"], s);
+    sky_pass_.draw();
+  }
+  glDisable(GL_SCISSOR_TEST);
+}
+
+void HillaireTechnique::bind_space_view(const Program& program, const FrameState& s) {
+  glBindTextureUnit(kSpaceOpenSkyUnit, space_open_sky_.id());
+  glBindTextureUnit(kSpaceOpenSkyUnit + 1, space_scattering_.id());
+  glBindTextureUnit(kSpaceOpenSkyUnit + 2, space_transmittance_.id());
+  glUniform1f(program.uniform("u_space_r"), s.space_r);
+  glUniform2fv(program.uniform("u_ground_heights"), 1, glm::value_ptr(s.frame.ground_heights));
+}
+
+// The open sky reads the table's whole rays and the lit ground, the
+// surfaces its slices: apart for a software rasteriser, in one program for
+// a GPU.
+void HillaireTechnique::draw_space_view_sky(const FrameState& s) {
+  if (schedule_ == Schedule::kPlain) {
+    const Program& program = programs_.sky["space_view"];
+    begin_sky(program, s);
+    bind_space_view(program, s);
+    sky_pass_.draw();
+    return;
+  }
+  draw_by_kind(programs_.sky["space_view_open_sky"], programs_.sky["space_view_surfaces"], s,
+               [&](const Program& program) { bind_space_view(program, s); });
+}
+
+// Every pixel without the march and the sun's disk (the open sky and the
+// surfaces apart: draw_by_kind), then the march's tiles (see
+// hillaire_sky.frag), then the pixels of the sun's disk. A camera lifted
+// onto the bottom sphere raises the rays under its horizon
+// (lifted_horizon.glsl), which may carry the disk out of its bound: there
+// the first part keeps the disk, with a metre to spare for the shader's
+// float |camera| (half a metre a step at Earth's radius).
+void HillaireTechnique::draw_sky_in_parts(const FrameState& s) {
+  const bool lifted = s.r < s.r_min + 1.0;
+  if (lifted) {
+    begin_sky(programs_.sky["unmarched"], s);
+    sky_pass_.draw();
+  } else {
+    draw_by_kind(programs_.sky["open_sky"], programs_.sky["surfaces"], s, [](const Program&) {});
+  }
+  draw_march_tiles(s);
+  if (!lifted && s.disk.z > 0 && s.disk.w > 0) {
+    begin_sky(programs_.sky["whole"], s);
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(s.disk.x, s.disk.y, s.disk.z, s.disk.w);
+    sky_pass_.draw();
+    glDisable(GL_SCISSOR_TEST);
+  }
+}
+
+// The 8 x 8 tiles with a surface past the froxels' blend, listed on the
+// GPU (sky_march_tiles.comp) and drawn by the whole shader as one quad
+// each.
+void HillaireTechnique::draw_march_tiles(const FrameState& s) {
+  const SkyFrame& frame = s.frame;
+  const int w = frame.width, h = frame.height;
+  const int tiles_x = (w + kMarchTile - 1) / kMarchTile;
+  const int tiles_y = (h + kMarchTile - 1) / kMarchTile;
+  const size_t tiles = size_t(tiles_x) * size_t(tiles_y);
+  const size_t bytes = (4 + 2 * tiles) * sizeof(GLuint);
+  if (bytes > march_tiles_bytes_) {
+    march_tiles_ = make_buffer(bytes, nullptr);
+    march_tiles_bytes_ = bytes;
+  }
+  const GLuint command[4] = {6, 0, 0, 0};  // six vertices a tile, no tiles yet
+  glNamedBufferSubData(march_tiles_.id(), 0, sizeof(command), command);
+  const Program& lister = programs_.march_tiles;
+  lister.use();
+  glBindTextureUnit(0, frame.depth_texture);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMarchTilesBinding, march_tiles_.id());
+  glUniformMatrix3fv(lister.uniform("u_ray_from_ndc"), 1, GL_FALSE,
+                     glm::value_ptr(frame.atmo_ray_from_ndc));
+  glUniform1f(lister.uniform("u_near"), frame.near);
+  glUniform2f(lister.uniform("u_viewport"), float(w), float(h));
+  // Where hillaire_sky.frag's blend from the froxels to the march begins.
+  glUniform1f(lister.uniform("u_blend_start"), float(0.8 * aerial_range_));
+  glDispatchCompute(groups(tiles_x), groups(tiles_y), 1);
+  glMemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  begin_sky(programs_.sky["tiles"], s);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, kMarchTilesBinding, march_tiles_.id());
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, march_tiles_.id());
+  sky_pass_.draw_indirect();
+  glBindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
 }
 
 }  // namespace planet

@@ -2,9 +2,10 @@
 // Hillaire 2020, "A Scalable and Production Ready Sky and Atmosphere
 // Rendering Technique": a transmittance LUT, a multiple-scattering LUT, a
 // sky-view LUT at the camera's altitude and aerial-perspective froxels,
-// each recomputed only when what it depends on changed (PassInputs: the
-// model for the first two, the altitude and the sun's elevation within a
-// stated step for the sky view, the exact view for the froxels), and a
+// each a pass of the frame's PassGraph, recomputed only when what it
+// depends on changed (its inputs: the model for the first two, the
+// altitude and the sun's elevation within a stated step for the sky view,
+// the exact view for the froxels), and a
 // per-pixel march with the same multiple-scattering LUT where the LUTs
 // cannot serve (high up and in space), or from outside the shell a
 // space-view LUT for the camera's distance and sun (space_view_lut.glsl)
@@ -13,16 +14,22 @@
 // takes the paper's Psi_ms = L_2 / (1 - f_ms) (technique "hillaire2020");
 // the first also carries the glow of sunlight that the air scatters
 // forward along the sun's path, past the table's degree (a
-// forward-gain LUT). See hillaire_functions.glsl for why.
-#include "gl/pass_inputs.h"
+// forward-gain LUT). See hillaire_functions.glsl for why. The sky pass is
+// split for a software rasteriser or drawn whole for a GPU, by the schedule
+// (gl/schedule.h) the technique takes when built.
+#include "atmosphere/gpu/hillaire/hillaire_programs.h"
 #include "atmosphere/gpu/technique.h"
 #include "gl/depth_probe.h"
 #include "gl/fullscreen_pass.h"
+#include "gl/pass_graph.h"
 #include "gl/program.h"
+#include "gl/schedule.h"
 #include "gl/texture.h"
 
 #include <array>
+#include <functional>
 #include <optional>
+#include <vector>
 
 namespace planet {
 
@@ -73,6 +80,9 @@ class HillaireTechnique final : public AtmosphereTechnique {
     // altitude and sun (the steps above are not used): what reuse is
     // measured against.
     bool reuse_passes = true;
+    // How the sky pass is split for the rasteriser (gl/schedule.h); empty:
+    // current_schedule(), by the command's --schedule or the GL renderer.
+    std::optional<Schedule> schedule;
   };
   explicit HillaireTechnique(Settings settings);
   HillaireTechnique() : HillaireTechnique(Settings{}) {}
@@ -94,6 +104,7 @@ class HillaireTechnique final : public AtmosphereTechnique {
 
   bool takes_terrain_shadow() const override { return settings_.terrain_shadows; }
   const Settings& settings() const { return settings_; }
+  Schedule schedule() const { return schedule_; }
   // Weight of the LUT path in the last frame (1: LUTs only, 0: per pixel).
   double lut_weight() const { return lut_weight_; }
   // Distance along the ray that the froxel volume covered in the last frame.
@@ -131,29 +142,36 @@ class HillaireTechnique final : public AtmosphereTechnique {
   GLuint aerial_transmittance() const { return aerial_transmittance_.id(); }
 
  private:
+  struct FrameState;
+  // The passes of prepare() and of render(), and what they run.
+  std::vector<Pass> model_passes();
+  void compute_multiple_scattering();
+  FrameState frame_state(const SkyFrame& frame);
+  void choose_path(double altitude);
+  void round_sky_view_inputs(FrameState& s);
+  bool sky_shadow(const FrameState& s) const;
+  void bound_shaded_pixels(FrameState& s);
+  std::vector<Pass> frame_passes(FrameState& s);
+  void compute_sky_view_lut(const FrameState& s);
+  bool froxels_needed(const FrameState& s);
+  PassKey froxel_inputs(const FrameState& s) const;
+  void compute_aerial_perspective(const FrameState& s);
+  void compute_space_view_lut(const FrameState& s);
+  void draw_space(const FrameState& s);
+  void begin_space(const Program& program, const FrameState& s);
+  void draw_sky(const FrameState& s);
+  void begin_sky(const Program& program, const FrameState& s);
+  void draw_by_kind(const Program& open_sky, const Program& surfaces, const FrameState& s,
+                    const std::function<void(const Program&)>& bind);
+  void bind_space_view(const Program& program, const FrameState& s);
+  void draw_space_view_sky(const FrameState& s);
+  void draw_sky_in_parts(const FrameState& s);
+  void draw_march_tiles(const FrameState& s);
+
   Settings settings_;
   AtmosphereModel model_;
-  Program transmittance_program_, multiple_scattering_program_, first_order_program_,
-      next_order_program_, orders_sum_program_, forward_gain_program_, sky_view_program_,
-      aerial_program_, sky_program_, space_program_, space_unlit_program_;
-  // The sky pass in parts for frames on the LUT path alone
-  // (hillaire_sky.frag): every pixel without the march, the open sky and
-  // the surfaces apart, held by the stencil that the classifying pass
-  // sets; then the whole shader over the tiles that sky_march_tiles.comp
-  // lists.
-  Program sky_classify_program_, sky_open_program_, sky_surface_program_, sky_tiles_program_,
-      march_tiles_program_;
-  // The first part with the sun's disk, for a lifted camera; compiled when
-  // first drawn.
-  std::optional<Program> sky_unmarched_sun_program_;
-  // The sky pass for frames on the per-pixel path alone (hillaire_sky.frag's
-  // NO_LUT), for coloured and grey Mie (+1), with and without the
-  // terrain's shadow (+2); compiled when first drawn.
-  std::array<std::optional<Program>, 4> sky_space_programs_;
-  // The space-view LUT's pass, and the sky passes that read it for the
-  // open sky and for the surfaces; compiled when first drawn.
-  std::optional<Program> space_view_program_;
-  std::array<std::optional<Program>, 2> sky_space_view_programs_;
+  Schedule schedule_;
+  HillairePrograms programs_;
   bool grey_mie_ = false;  // the model's Mie scattering is the same in every channel
   Buffer march_tiles_;  // the indirect draw's command, then the tiles
   size_t march_tiles_bytes_ = 0;
@@ -166,7 +184,7 @@ class HillaireTechnique final : public AtmosphereTechnique {
   DepthProbe surface_probe_;
   bool prepared_ = false;  // prepare() ran since the last render()
   PassKey model_key_;      // the model's block: every pass depends on it
-  PassInputs inputs_;
+  PassGraph graph_;
   double sky_view_altitude_ = 0.0, sky_view_sun_zenith_ = 0.0;
   double lut_weight_ = 1.0;
   double aerial_range_ = 0.0;

@@ -252,7 +252,49 @@ void OneilTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   glBindTextureUnit(0, frame.depth_texture);
   glBindTextureUnit(1, frame.surface_texture);
   glEnable(GL_STENCIL_TEST);
+  // Each pass shades the pixels of its class alone (the stencil's, which
+  // the classifying pass sets and the grid's pass increments where served).
+  std::vector<Pass> passes;
+  passes.push_back({.name = "classify", .run = [this, &frame] { classify(frame); }});
+  passes.push_back(
+      {.name = "sky", .reads = {"classify"}, .run = [this, &frame] { draw_dome(frame); }});
+  passes.push_back(
+      {.name = "aerial", .reads = {"classify"}, .run = [this, &frame] { draw_grid(frame); }});
+  passes.push_back(
+      {.name = "own_rays", .reads = {"aerial"}, .run = [this, &frame] { draw_own_rays(frame); }});
+  graph_.run(std::move(passes), timer);
+  glDisable(GL_STENCIL_TEST);
+  check_gl_errors("OneilTechnique::render");
+}
 
+// Every pixel: the sky's are marked, and given the sun as seen from space.
+void OneilTechnique::classify(const SkyFrame& frame) {
+  set_frame_uniforms(classify_program_, frame);
+  glStencilFunc(GL_ALWAYS, kSkyPixel, 0xff);
+  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+  fullscreen_.draw();
+}
+
+// From outside, the dome is the ring between the planet's disk and the
+// limb, a few pixels wide from far away: rings no closer than half a
+// pixel (they crowd toward both edges), but never fewer than 16 (with 4,
+// the 32x16 asteroid_space scene went from 30.5 to 33.9 % in red; with
+// 16 its error is unchanged). From 40 000 km that is a third of the
+// dome's vertices and their sums.
+int OneilTechnique::dome_rings(const SkyFrame& frame) const {
+  const double r = glm::length(frame.camera_atmo);
+  if (r < model_.top_radius) return settings_.dome;
+  double width = std::asin(std::min(model_.top_radius / r, 1.0)) -
+                 std::asin(std::min(model_.bottom_radius / r, 1.0));
+  // The angle of one pixel at the centre of the view: the rays of NDC
+  // y = 0 and y = 2 / height.
+  glm::dvec3 centre = glm::dmat3(frame.atmo_ray_from_ndc) * glm::dvec3(0, 0, 1);
+  glm::dvec3 next = glm::dmat3(frame.atmo_ray_from_ndc) * glm::dvec3(0, 2.0 / frame.height, 1);
+  double pixel = std::acos(std::min(glm::dot(glm::normalize(centre), glm::normalize(next)), 1.0));
+  return std::clamp(int(std::ceil(2 * width / std::max(pixel, 1e-9))), 16, settings_.dome);
+}
+
+void OneilTechnique::draw_dome(const SkyFrame& frame) {
   // The camera's vertical and two horizontals for the dome, in double: the
   // camera may be 1e9 m out.
   glm::dvec3 camera = frame.camera_atmo;
@@ -261,33 +303,7 @@ void OneilTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   glm::dvec3 east = glm::normalize(glm::cross(any, up));
   glm::dvec3 north = glm::cross(up, east);
   bool outside = glm::length(camera) >= model_.top_radius;
-
-  timer.begin("classify");
-  // Every pixel: the sky's are marked, and given the sun as seen from space.
-  set_frame_uniforms(classify_program_, frame);
-  glStencilFunc(GL_ALWAYS, kSkyPixel, 0xff);
-  glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-  fullscreen_.draw();
-  timer.end();
-  timer.begin("sky");
-  // From outside, the dome is the ring between the planet's disk and the
-  // limb, a few pixels wide from far away: rings no closer than half a
-  // pixel (they crowd toward both edges), but never fewer than 16 (with 4,
-  // the 32x16 asteroid_space scene went from 30.5 to 33.9 % in red; with
-  // 16 its error is unchanged). From 40 000 km that is a third of the
-  // dome's vertices and their sums.
-  int rings = settings_.dome;
-  if (outside) {
-    double r = glm::length(camera);
-    double width = std::asin(std::min(model_.top_radius / r, 1.0)) -
-                   std::asin(std::min(model_.bottom_radius / r, 1.0));
-    // The angle of one pixel at the centre of the view: the rays of NDC
-    // y = 0 and y = 2 / height.
-    glm::dvec3 centre = glm::dmat3(frame.atmo_ray_from_ndc) * glm::dvec3(0, 0, 1);
-    glm::dvec3 next = glm::dmat3(frame.atmo_ray_from_ndc) * glm::dvec3(0, 2.0 / frame.height, 1);
-    double pixel = std::acos(std::min(glm::dot(glm::normalize(centre), glm::normalize(next)), 1.0));
-    rings = std::clamp(int(std::ceil(2 * width / std::max(pixel, 1e-9))), 16, settings_.dome);
-  }
+  const int rings = dome_rings(frame);
   set_frame_uniforms(dome_program_, frame);
   glUniform1i(dome_program_.uniform("u_rings"), rings);
   glUniform1i(dome_program_.uniform("u_segments"), 2 * settings_.dome);
@@ -311,35 +327,34 @@ void OneilTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
     }
   }
   draw_cells(dome_indices_, dome_vao_, dome_cells);
-  timer.end();
+}
 
-  timer.begin("aerial");
-  // The grid's pixels from its vertices, but for those the interpolation
-  // cannot serve, which sum their own rays. The grid's shader discards,
-  // so its stencil test comes after it: it runs on every pixel, but the
-  // heavy part is the vertices'.
+// The grid's pixels from its vertices, but for those the interpolation
+// cannot serve, which sum their own rays. The grid's shader discards, so
+// its stencil test comes after it: it runs on every pixel, but the heavy
+// part is the vertices'.
+void OneilTechnique::draw_grid(const SkyFrame& frame) {
+  const int cell = settings_.cell;
   set_frame_uniforms(ground_program_, frame);
   glUniform1i(ground_program_.uniform("u_cell"), cell);
-  glUniform1i(ground_program_.uniform("u_columns"), columns);
+  glUniform1i(ground_program_.uniform("u_columns"), grid_width_);
   static_assert(kServedPixel == kGridPixel + 1);
   glStencilFunc(GL_EQUAL, kGridPixel, 0xff);
   glStencilOp(GL_KEEP, GL_KEEP, GL_INCR);
   // Only the cells over the atmosphere: a surface beyond it, if any, is
   // left to the pixels' own rays, which see no air there.
-  CellRange range = cells_of_sphere(frame, model_.top_radius, cell, columns, rows);
+  CellRange range = cells_of_sphere(frame, model_.top_radius, cell, grid_width_, grid_height_);
   std::vector<GLuint> grid_cells;
   for (int j = range.first.y; j < range.last.y; ++j) {
-    for (int i = range.first.x; i < range.last.x; ++i) add_cell(grid_cells, columns, i, j);
+    for (int i = range.first.x; i < range.last.x; ++i) add_cell(grid_cells, grid_width_, i, j);
   }
   draw_cells(grid_indices_, grid_vao_, grid_cells);
-  timer.end();
-  timer.begin("own_rays");
+}
+
+void OneilTechnique::draw_own_rays(const SkyFrame& frame) {
   set_frame_uniforms(pixel_program_, frame);
   shade_only(kGridPixel);
   fullscreen_.draw();
-  timer.end();
-  glDisable(GL_STENCIL_TEST);
-  check_gl_errors("OneilTechnique::render");
 }
 
 }  // namespace planet

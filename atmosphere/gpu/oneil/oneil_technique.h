@@ -12,6 +12,7 @@
 #include "atmosphere/gpu/technique.h"
 #include "atmosphere/math/oneil_math.h"
 #include "gl/fullscreen_pass.h"
+#include "gl/pass_graph.h"
 #include "gl/program.h"
 #include "gl/texture.h"
 
@@ -42,6 +43,12 @@ class OneilTechnique final : public AtmosphereTechnique {
 
  private:
   void set_frame_uniforms(const Program& program, const SkyFrame& frame) const;
+  // The passes of a frame, in order.
+  void classify(const SkyFrame& frame);
+  int dome_rings(const SkyFrame& frame) const;
+  void draw_dome(const SkyFrame& frame);
+  void draw_grid(const SkyFrame& frame);
+  void draw_own_rays(const SkyFrame& frame);
 
   Settings settings_;
   AtmosphereModel model_;
@@ -54,7 +61,8 @@ class OneilTechnique final : public AtmosphereTechnique {
   FullscreenPass fullscreen_;
   VertexArray dome_vao_, grid_vao_;
   Buffer dome_indices_, grid_indices_;
-  int grid_width_ = 0, grid_height_ = 0;
+  int grid_width_ = 0, grid_height_ = 0;  // the grid's cells, columns and rows
+  PassGraph graph_;
 };
 
 }  // namespace planet

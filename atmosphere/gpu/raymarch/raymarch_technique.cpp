@@ -33,7 +33,12 @@ void RaymarchTechnique::update(const AtmosphereModel& model) {
 }
 
 void RaymarchTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
-  timer.begin("sky");
+  std::vector<Pass> passes;
+  passes.push_back({.name = "sky", .run = [this, &frame] { draw_sky(frame); }});
+  graph_.run(std::move(passes), timer);
+}
+
+void RaymarchTechnique::draw_sky(const SkyFrame& frame) {
   pass_.begin(frame.target_framebuffer, frame.width, frame.height, program_);
   glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, block_.id());
   glBindTextureUnit(0, frame.depth_texture);
@@ -48,7 +53,6 @@ void RaymarchTechnique::render(const SkyFrame& frame, GpuTimer& timer) {
   glUniform2f(program_.uniform("u_viewport"), float(frame.width), float(frame.height));
   if (steps_.terrain_shadows) bind_terrain_shadow(program_, frame.terrain_shadow);
   pass_.draw();
-  timer.end();
 }
 
 }  // namespace planet

@@ -4,6 +4,7 @@
 // brute-force baseline every other technique is compared against for speed.
 #include "atmosphere/gpu/technique.h"
 #include "gl/fullscreen_pass.h"
+#include "gl/pass_graph.h"
 #include "gl/program.h"
 #include "gl/texture.h"
 
@@ -26,10 +27,13 @@ class RaymarchTechnique final : public AtmosphereTechnique {
   bool takes_terrain_shadow() const override { return steps_.terrain_shadows; }
 
  private:
+  void draw_sky(const SkyFrame& frame);
+
   Steps steps_;
   Program program_;
   Buffer block_;
   FullscreenPass pass_;
+  PassGraph graph_;
 };
 
 }  // namespace planet
