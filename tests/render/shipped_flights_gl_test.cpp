@@ -21,8 +21,9 @@ namespace PLANET_TEST_ID {
 class ShippedFlightGLTest : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(ShippedFlightGLTest, NoFrameIsBlackAndNoKeyframeIsUnderground) {
-  FlightScript script = load_flight_script(data_dir() / "flights" / (GetParam() + ".json"));
-  EXPECT_NO_THROW(check_keyframes_above_ground(script, terrain_ground()));
+  const GroundHeight ground = terrain_ground();
+  FlightScript script = load_flight_script(data_dir() / "flights" / (GetParam() + ".json"), ground);
+  EXPECT_NO_THROW(check_keyframes_above_ground(script, ground));
   // A quarter of the size: what is seen, not its detail.
   script.width /= 4;
   script.height /= 4;
