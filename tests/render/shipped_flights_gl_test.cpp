@@ -55,9 +55,10 @@ INSTANTIATE_TEST_SUITE_P(Flights, ShippedFlightGLTest,
                          ::testing::Values("alps_shafts", "alps_sunset", "ascent",
                                            "asteroid_landing", "alps_nightfall",
                                            "earth_night_lights", "earth_orbit_terminator",
-                                           "governed_ascent", "mars_crater_sunset", "mars_sunset",
-                                           "moon_descent", "terrain_asteroid", "terrain_earth",
-                                           "terrain_mars"),
+                                           "everest_dawn", "governed_ascent", "mars_crater_sunset",
+                                           "mars_sunset", "moon_descent", "olympus_mons",
+                                           "terrain_asteroid", "terrain_earth", "terrain_mars",
+                                           "tycho_landing", "valles_marineris"),
                          [](const auto& instance) { return instance.param; });
 
 }  // namespace PLANET_TEST_ID
