@@ -1,15 +1,18 @@
 #include "terrain/terrain_config.h"
 
 #include "terrain/cage_height.h"
+#include "terrain/grid_height.h"
 #include "terrain/height_map.h"
 #include "terrain/obj_cage.h"
 #include "terrain/procedural_height.h"
 
 #include "core/data_paths.h"
+#include "core/error.h"
 #include "core/json_reader.h"
 
 #include <fmt/format.h>
 
+#include <cmath>
 #include <cstdio>
 #include <map>
 #include <mutex>
@@ -86,6 +89,91 @@ std::shared_ptr<const SurfaceMaps> load_maps(JsonObject& o, const Body& body) {
   return maps;
 }
 
+// A grid's "datum": the surface its heights are reckoned from, which must
+// be the body's base shape or stand in for it. A sphere must be the body's
+// own (heights from it are radii); a geoid or an areoid (an equipotential
+// surface) is laid on the body's ellipsoid, so their reference radii must
+// agree to 0.1 % (the areoid's 3396.0 km against Mars's 3396.19 km ellipsoid).
+void check_datum(JsonObject& o, const Body& body, const std::string& file) {
+  std::string surface = o.string("surface");
+  double radius = o.number("radius_m", 1.0, 1e9);
+  o.finish();
+  const double a = body.shape.equatorial_radius;
+  if (surface == "sphere") {
+    if (body.shape.flattening != 0.0 || std::abs(radius - a) > 1.0) {
+      o.fail("radius_m", fmt::format("{}'s heights stand above a sphere of {} m, but {} is an "
+                                     "ellipsoid of {} m with flattening {}",
+                                     file, radius, body.name, a, body.shape.flattening));
+    }
+  } else if (surface == "geoid" || surface == "areoid") {
+    if (std::abs(radius - a) > 1e-3 * a) {
+      o.fail("radius_m", fmt::format("{}'s heights stand above the {} of {} m, which cannot stand "
+                                     "for {}'s ellipsoid of {} m (another body's grid?)",
+                                     file, surface, radius, body.name, a));
+    }
+  } else {
+    o.fail("surface", fmt::format("'{}' is not a datum (sphere, geoid, areoid)", surface));
+  }
+}
+
+// Grids read once per process whatever the number of terrains built from
+// them (Earth's holds 19 MB of samples and takes about half a second to decode).
+std::shared_ptr<const GridData> load_grid(const GridSpec& spec) {
+  static std::mutex mutex;
+  static std::map<std::string, std::shared_ptr<const GridData>> loaded;
+  std::string key =
+      fmt::format("{}|{}|{}|{}|{}|{}|{}|{}|{}", spec.file.string(), int(spec.layout),
+                  int(spec.registration), spec.width, spec.height, spec.west_longitude_deg,
+                  spec.scale, spec.offset, spec.geodetic_latitude);
+  std::lock_guard<std::mutex> lock(mutex);
+  if (auto kept = loaded[key]) return kept;
+  auto data = std::make_shared<const GridData>(spec);
+  loaded[key] = data;
+  return data;
+}
+
+std::shared_ptr<const HeightSource> parse_grid(JsonObject& o, const Body& body,
+                                               std::optional<double>& sea_level,
+                                               double mean_radius) {
+  GridSpec spec;
+  (void)o.string_or("source", "");  // where the grid comes from, for people
+  spec.file = o.string("file");
+  if (spec.file.is_relative()) spec.file = project_root() / spec.file;
+  std::string layout = o.string("layout");
+  if (layout == "int16_le")
+    spec.layout = GridSpec::Layout::kInt16Le;
+  else if (layout == "int16_be")
+    spec.layout = GridSpec::Layout::kInt16Be;
+  else if (layout == "png_u16")
+    spec.layout = GridSpec::Layout::kPngU16;
+  else
+    o.fail("layout",
+           fmt::format("'{}' is not a grid layout (int16_le, int16_be, png_u16)", layout));
+  std::string registration = o.string("registration");
+  if (registration == "pixel")
+    spec.registration = GridSpec::Registration::kPixel;
+  else if (registration == "node")
+    spec.registration = GridSpec::Registration::kNode;
+  else
+    o.fail("registration", fmt::format("'{}' is not a registration (pixel, node)", registration));
+  spec.width = o.integer("width", 4, 1 << 20);
+  spec.height = o.integer("height", 2, 1 << 20);
+  spec.west_longitude_deg = o.number_or("west_longitude_deg", 0.0, -360.0, 360.0);
+  spec.scale = o.number("scale_m", 1e-6, 1e3);
+  spec.offset = o.number_or("offset_m", 0.0, -1e5, 1e5);
+  std::string latitude = o.string("latitude");
+  if (latitude == "geodetic")
+    spec.geodetic_latitude = true;
+  else if (latitude != "planetocentric")
+    o.fail("latitude", fmt::format("'{}' is not a latitude (geodetic, planetocentric)", latitude));
+  JsonObject datum = o.object("datum");
+  check_datum(datum, body, spec.file.string());
+  if (o.has("sea_level_m")) sea_level = o.number("sea_level_m", -1e5, 1e5);
+  o.finish();
+  double b = body.shape.polar_radius(), a = body.shape.equatorial_radius;
+  return std::make_shared<GridHeight>(load_grid(spec), mean_radius, (a * a) / (b * b), sea_level);
+}
+
 std::shared_ptr<const HeightSource> parse_heights(JsonObject& o, const Body& body,
                                                   std::optional<double>& sea_level,
                                                   const std::shared_ptr<const SurfaceMaps>& maps) {
@@ -112,6 +200,7 @@ std::shared_ptr<const HeightSource> parse_heights(JsonObject& o, const Body& bod
     map->set_body_radius(mean_radius);
     return map;
   }
+  if (type == "grid") return parse_grid(o, body, sea_level, mean_radius);
   if (type == "cage") {
     std::filesystem::path file = o.string("file");
     if (file.is_relative()) file = project_root() / file;
@@ -123,7 +212,8 @@ std::shared_ptr<const HeightSource> parse_heights(JsonObject& o, const Body& bod
     return std::make_shared<CageHeight>(read_obj_cage(file), file.string(), mean_radius,
                                         std::move(layers));
   }
-  o.fail("type", fmt::format("'{}' is not a height source (procedural, height_map, cage)", type));
+  o.fail("type",
+         fmt::format("'{}' is not a height source (procedural, grid, height_map, cage)", type));
 }
 
 }  // namespace

@@ -36,9 +36,9 @@ sed 's/"technique": "hillaire"/"technique": "hillaire:per_pixel_steps=2"/' "$fli
 expect "steps.json: technique: hillaire: per_pixel_steps=2 is outside 4 to 256" \
   "$planet" capture --flight "$work/steps.json" --out "$work/s" --quiet
 [ -e "$work/s" ] && { echo "FAIL: a capture with a bad technique left its folder"; failed=1; }
-# A keyframe under the ground (919 m there) is refused, unless the script allows it.
-sed 's/"height_m": 921.4,/"height_m": 500.0,/' "$flights/ascent.json" > "$work/under.json"
-expect "under.json: keyframes.0.: the camera is 419.4 m below the ground (height_m 500.0, the ground 919.4 m" \
+# A keyframe under the ground (3148 m there) is refused, unless the script allows it.
+sed 's/"height_above_ground_m": 2.0,/"height_m": 500.0,/' "$flights/ascent.json" > "$work/under.json"
+expect "under.json: keyframes.0.: the camera is 2648.1 m below the ground (height_m 500.0, the ground 3148.1 m" \
   "$planet" capture --flight "$work/under.json" --out "$work/u" --quiet
 sed 's/"technique": "hillaire",/"technique": "hillaire", "allow_below_ground": true,/' "$work/under.json" \
   > "$work/under_allowed.json"
@@ -74,4 +74,17 @@ expect "earth_noon-4x2-64spp-rgb-0123456789abcdef.sums: not the sums of a refere
   env PLANET_CACHE_DIR="$work/cache" "$planet" reference --scene earth_noon --width 4 --height 2 \
   --spp 96 --out "$work/r.exr" --quiet
 [ -e "$work/r.exr" ] && { echo "FAIL: a reference was written from broken sums"; failed=1; }
+# A body's elevation grid: truncated, or another body's (its datum), is one
+# line naming the file before any frame.
+planets="$(dirname "$flights")/planets"
+head -c 2000000 "$(dirname "$flights")/elevation/mars/megt90n000cb.img" > "$work/short.img"
+sed "s|data/elevation/mars/megt90n000cb.img|$work/short.img|" "$planets/mars.json" > "$work/mars_short.json"
+expect "short.img: 2000000 bytes, but a grid of 1440 x 720 16-bit samples is 2073600 bytes (truncated?)" \
+  "$planet" probe ground --planet "$work/mars_short.json" --lat 0 --lon 0
+sed 's|"radius_m": 3396000.0|"radius_m": 1737400.0|' "$planets/mars.json" > "$work/mars_moon_datum.json"
+expect "mars_moon_datum.json: terrain.height.datum.radius_m: " \
+  "$planet" probe ground --planet "$work/mars_moon_datum.json" --lat 0 --lon 0
+sed "s|\"body\": \"mars\"|\"body\": \"$work/mars_short.json\"|" "$flights/mars_sunset.json" > "$work/short_flight.json"
+expect "short.img: 2000000 bytes" "$planet" capture --flight "$work/short_flight.json" --out "$work/g"
+[ -e "$work/g" ] && { echo "FAIL: a capture over a truncated grid left its folder"; failed=1; }
 exit $failed

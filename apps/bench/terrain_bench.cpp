@@ -28,10 +28,12 @@ namespace {
 
 Body earth() { return load_body(data_dir() / "planets" / "earth.json"); }
 
-// Above the Bernese Alps, `above` metres over the ground, looking east and down.
-Camera camera_above(const Body& body, const TerrainSurface& surface, double above) {
+// Above the Bernese Alps (or `lat_deg`, `lon_deg`), `above` metres over
+// the ground, looking east and down.
+Camera camera_above(const Body& body, const TerrainSurface& surface, double above,
+                    double lat_deg = 46.55, double lon_deg = 7.98) {
   Geodesy geodesy(body.shape);
-  Geodetic place{glm::radians(46.55), glm::radians(7.98), 0.0};
+  Geodetic place{glm::radians(lat_deg), glm::radians(lon_deg), 0.0};
   double ground = 0;
   surface.point(glm::normalize(geodesy.body_from_geodetic(place)), &ground);
   place.height = ground + above;
@@ -75,11 +77,12 @@ void time_frames(benchmark::State& state, Render render, const std::vector<PassC
   }
 }
 
-void BM_TerrainLodSelection(benchmark::State& state) {
-  Body body = earth();
+// The selection over a body's ground, `above` metres over it at a place.
+void time_lod_selection(benchmark::State& state, const Body& body, double above, double lat_deg,
+                        double lon_deg) {
   TerrainSurface surface(body.shape, parse_terrain(body));
   LodSelector selector(surface);
-  Camera camera = camera_above(body, surface, double(state.range(0)));
+  Camera camera = camera_above(body, surface, above, lat_deg, lon_deg);
   LodView view;
   view.eye_body = camera.pos_body;
   view.view_from_body = glm::mat3_cast(glm::conjugate(camera.body_from_camera));
@@ -108,7 +111,28 @@ void BM_TerrainLodSelection(benchmark::State& state) {
   state.counters["tiles_drawn"] = double(drawn);
   state.counters["triangles"] = double(drawn * tile_indices().size() / 3);
 }
+
+void BM_TerrainLodSelection(benchmark::State& state) {
+  time_lod_selection(state, earth(), double(state.range(0)), 46.55, 7.98);
+}
 BENCHMARK(BM_TerrainLodSelection)->Arg(2)->Arg(10000)->Arg(400000)->Unit(benchmark::kMicrosecond);
+
+// The same on Mars over Olympus Mons' caldera and on the Moon over Tycho.
+void BM_TerrainLodSelectionOn(benchmark::State& state, const char* name, double lat_deg,
+                              double lon_deg) {
+  Body body = load_body(data_dir() / "planets" / (std::string(name) + ".json"));
+  time_lod_selection(state, body, double(state.range(0)), lat_deg, lon_deg);
+}
+BENCHMARK_CAPTURE(BM_TerrainLodSelectionOn, mars, "mars", 18.35, -133.4)
+    ->Arg(2)
+    ->Arg(10000)
+    ->Arg(400000)
+    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(BM_TerrainLodSelectionOn, moon, "moon", -43.31, -11.36)
+    ->Arg(2)
+    ->Arg(10000)
+    ->Arg(400000)
+    ->Unit(benchmark::kMicrosecond);
 
 void BM_TerrainTileBuild(benchmark::State& state, const char* name) {
   Body body = load_body(data_dir() / "planets" / (std::string(name) + ".json"));
@@ -130,6 +154,7 @@ void BM_TerrainTileBuild(benchmark::State& state, const char* name) {
 }
 BENCHMARK_CAPTURE(BM_TerrainTileBuild, earth, "earth")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_TerrainTileBuild, mars, "mars")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_TerrainTileBuild, moon, "moon")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_TerrainTileBuild, asteroid, "asteroid")->Unit(benchmark::kMillisecond);
 
 // The part of a tile build that is the shadows' own: sampling the grid's

@@ -371,11 +371,13 @@ TEST_F(HillaireGLTest, NoNanOrInfFromTheGroundToDeepSpaceAndInsideThePlanet) {
 // below its horizon: that drew a band along the horizon, 4x darker in red
 // than both the sky above and the terrain below (red 0.005 against 0.017
 // at the darkest elsewhere). The view is data/flights/terrain_mars.json's
-// first frame, 2 m above the ground and 748 m below the reference surface.
+// first frame over the procedural Mars, 2 m above the ground and 748 m
+// below the reference surface.
 TEST(HillaireLowlandsGLTest, NoDarkBandWhereTheTerrainLiesBelowTheBottomSphere) {
   setenv("PLANET_GL_DEBUG", "1", 1);
   auto context = GlContext::create_headless();
-  Body body = load_body(data_dir() / "planets" / "mars.json");
+  // The procedural Mars, whose lowland this view was found over.
+  Body body = load_body(project_root() / "tests/data/planets/mars_procedural.json");
   AtmosphereModel model = load_atmosphere(body);
   const int width = 240, height = 135;
   FrameRenderer renderer(width, height);

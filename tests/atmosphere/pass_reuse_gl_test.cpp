@@ -287,13 +287,14 @@ TEST_F(PassReuseGLTest, OnTheGroundTheSunsDiskIsDrawnWithinItsBoundAndTheImageIs
   }
 }
 
-// Over Mars's northern lowlands, 748 m below the bottom sphere, the camera
+// Over (the procedural) Mars's lowlands, 748 m below the bottom sphere, the camera
 // is lifted onto it and rays under its horizon are raised
 // (lifted_horizon.glsl): there the first part of the sky pass keeps the
 // sun's disk. The sun 15 deg up ahead (lower, Mars's dust dims its disk
 // to nothing): the same image as the unpruned frame's, the disk in it.
 TEST_F(PassReuseGLTest, OverGroundBelowTheBottomSphereTheSunsDiskIsTheUnprunedFramesToo) {
-  Body mars = load_body(data_dir() / "planets" / "mars.json");
+  // The procedural Mars, whose lowland lies there.
+  Body mars = load_body(project_root() / "tests/data/planets/mars_procedural.json");
   auto view = view_from_place(mars.shape, {glm::radians(18.65), glm::radians(-134.8), -747.912},
                               90.0, 10.0, 20.0, 10.0, 0.0);
   expect_the_suns_disk_as_unpruned(mars, load_atmosphere(mars), view, {48.5, 40.5}, 96, 54);

@@ -114,6 +114,34 @@ def height_map_seeds(scratch):
     put("height_map", b"\x01" + b"v/1\x01" + bytes(64))
 
 
+def grid_height_seeds(scratch):
+    """Elevation grids as the target reads them: a byte for the layout
+    (0 int16_le, 1 int16_be, 2 png_u16; plus 3 for node rows, 6 for
+    geodetic ones), the declared width (2 + 2 (b % 40)) and height
+    (1 + b % 40), then the file: the shipped grids' first rows, cut to the
+    declared size and beside it, and a 16-bit PNG."""
+    def head(a, b):  # width 2 + 2a, height 1 + b
+        return bytes([a, b])
+    moon = (root / "data/elevation/moon/LDEM_4.IMG").read_bytes()
+    mars = (root / "data/elevation/mars/megt90n000cb.img").read_bytes()
+    for layout, data in ((0, moon), (1, mars)):
+        for registration in (0, 3):
+            size = 2 * 80 * 40
+            put("grid_height", bytes([layout + registration]) + head(39, 39) + data[:size])
+            put("grid_height", bytes([layout + registration + 6]) + head(3, 3) + data[: 2 * 8 * 4])
+            put("grid_height", bytes([layout + registration]) + head(3, 3) + data[: 2 * 8 * 4 - 1])
+            put("grid_height", bytes([layout + registration]) + head(3, 3) + data[: 2 * 8 * 5])
+    put("grid_height", bytes([0]) + head(3, 3) + b"\x00\x80" * 32)  # missing-data values
+    f = scratch / "grid.png"
+    subprocess.run(["oiiotool", "--nosoftwareattrib", "--create", "8x4", "1", "--fill:bottom=0.4:top=0.6",
+                    "0,0,8,4", "-d", "uint16", "-o", str(f)], check=True)
+    data = f.read_bytes()
+    put("grid_height", bytes([2]) + head(3, 3) + data)
+    put("grid_height", bytes([5]) + head(3, 4) + data)
+    put("grid_height", bytes([2]) + head(3, 3) + data[: len(data) // 2])
+    put("grid_height", bytes([2]) + head(3, 3) + PNG)
+
+
 def reference_seeds():
     sums = sorted((root / "data/reference").glob("stability-*-16x8-*.sums"))[:2]
     for f in sums:
@@ -215,6 +243,7 @@ def main():
             put("flight", v)
         obj_seeds()
         height_map_seeds(scratch)
+        grid_height_seeds(scratch)
         reference_seeds()
         lab_table_seeds()
         measured_seeds()

@@ -18,6 +18,7 @@ PLANET_DECLARE(body)
 PLANET_DECLARE(flight)
 PLANET_DECLARE(obj_cage)
 PLANET_DECLARE(height_map)
+PLANET_DECLARE(grid_height)
 PLANET_DECLARE(reference_sums)
 PLANET_DECLARE(reference_exr)
 PLANET_DECLARE(lab_tables)
@@ -33,6 +34,7 @@ int main(int argc, char** argv) {
       {"flight", planet_fuzz_flight},
       {"obj_cage", planet_fuzz_obj_cage},
       {"height_map", planet_fuzz_height_map},
+      {"grid_height", planet_fuzz_grid_height},
       {"reference_sums", planet_fuzz_reference_sums},
       {"reference_exr", planet_fuzz_reference_exr},
       {"lab_tables", planet_fuzz_lab_tables},

@@ -33,7 +33,8 @@ struct Frame {
 // south-west, seen through `fov_deg` along `heading_deg` and `pitch_deg`.
 Frame render(bool glare, double heading_deg, double pitch_deg, double fov_deg,
              double exposure = 8.0) {
-  Body body = load_body(data_dir() / "planets" / "earth.json");
+  // The procedural Earth, over which the glare's bounds were measured.
+  Body body = load_body(project_root() / "tests/data/planets/earth_procedural.json");
   PlaceView view = view_from_place(body.shape, {glm::radians(46.55), glm::radians(7.98), 6000.0},
                                    heading_deg, pitch_deg, fov_deg, 20.0, 240.0);
   FrameRenderer renderer(kWidth, kHeight);

@@ -19,6 +19,7 @@
 #include "core/error.h"
 #include "core/image_io.h"
 #include "gl/context.h"
+#include "terrain/ground.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -73,7 +74,7 @@ class GovernorGLTest : public ::testing::Test {
  protected:
   void SetUp() override {
     context_ = GlContext::create_headless();
-    script_ = load_flight_script(data_dir() / "flights" / "governed_ascent.json");
+    script_ = load_flight_script(data_dir() / "flights" / "governed_ascent.json", terrain_ground());
     script_.width /= 5;
     script_.height /= 5;
     root_ = std::filesystem::temp_directory_path() / ("planet-governor-" + std::to_string(getpid()));

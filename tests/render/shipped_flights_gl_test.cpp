@@ -21,8 +21,9 @@ namespace PLANET_TEST_ID {
 class ShippedFlightGLTest : public ::testing::TestWithParam<std::string> {};
 
 TEST_P(ShippedFlightGLTest, NoFrameIsBlackAndNoKeyframeIsUnderground) {
-  FlightScript script = load_flight_script(data_dir() / "flights" / (GetParam() + ".json"));
-  EXPECT_NO_THROW(check_keyframes_above_ground(script, terrain_ground()));
+  const GroundHeight ground = terrain_ground();
+  FlightScript script = load_flight_script(data_dir() / "flights" / (GetParam() + ".json"), ground);
+  EXPECT_NO_THROW(check_keyframes_above_ground(script, ground));
   // A quarter of the size: what is seen, not its detail.
   script.width /= 4;
   script.height /= 4;
@@ -54,9 +55,10 @@ INSTANTIATE_TEST_SUITE_P(Flights, ShippedFlightGLTest,
                          ::testing::Values("alps_shafts", "alps_sunset", "ascent",
                                            "asteroid_landing", "alps_nightfall",
                                            "earth_night_lights", "earth_orbit_terminator",
-                                           "governed_ascent", "mars_crater_sunset", "mars_sunset",
-                                           "moon_descent", "terrain_asteroid", "terrain_earth",
-                                           "terrain_mars"),
+                                           "everest_dawn", "governed_ascent", "mars_crater_sunset",
+                                           "mars_sunset", "moon_descent", "olympus_mons",
+                                           "terrain_asteroid", "terrain_earth", "terrain_mars",
+                                           "tycho_landing", "valles_marineris"),
                          [](const auto& instance) { return instance.param; });
 
 }  // namespace PLANET_TEST_ID

@@ -1,13 +1,15 @@
 // The terrain's shadows as a frame shows them: at a low sun the ridges
-// shade a part of the ground and the air over it (measured: 457 of 4926
-// ground pixels lose a tenth or more), at a high sun none, and shadows
-// only ever take light away; in the air, facing a low sun, the haze over shaded valleys loses
-// the sun's light alike in the froxels and in the brute-force march.
+// shade a part of the ground and the air over it (measured over ETOPO5's
+// Alps: 1033 of 4806 ground pixels lose a tenth or more), at a high sun
+// none, and shadows only ever take light away; in the air, facing a low
+// sun, the haze over shaded valleys loses the sun's light alike in the
+// froxels and in the brute-force march.
 #include "atmosphere/gpu/registry.h"
 #include "core/data_paths.h"
 #include "gl/context.h"
 #include "render/frame.h"
 #include "sim/geodesy.h"
+#include "terrain/ground.h"
 
 #include "tests/render/correlation.h"
 #include "tests/render/view_from_place.h"
@@ -66,12 +68,21 @@ Shade compare(const Body& body, const PlaceView& view) {
   return s;
 }
 
+// Where alps_sunset's frame 20 and alps_shafts' first frame fly: 1700 m
+// over the ground at 46.52 N, 7.95 E, south-west of the Jungfrau (the
+// ground 3021 m above the ellipsoid on ETOPO5's Alps).
+Geodetic over_the_alps(const Body& earth) {
+  Geodetic place{glm::radians(46.52), glm::radians(7.95), 0.0};
+  place.height = terrain_ground()(earth, place) + 1700.0;
+  return place;
+}
+
 TEST(TerrainShadowsGLTest, LowSunShadesTheValleysAndHighSunAlmostNothing) {
   auto context = GlContext::create_headless();
   Body earth = load_body(data_dir() / "planets" / "earth.json");
-  // alps_sunset's frame 20: 3000 m over the Alps, looking away from a sun
+  // alps_sunset's frame 20: 1700 m over the Alps, looking away from a sun
   // 3 deg up in the west-north-west; then the same sun 60 deg up.
-  Geodetic place{glm::radians(46.52), glm::radians(7.95), 3000.0};
+  Geodetic place = over_the_alps(earth);
   Shade low = compare(earth, view_from_place(earth.shape, place, 100.0, -8.0, 60.0, 3.0, 300.0));
   Shade high = compare(earth, view_from_place(earth.shape, place, 100.0, -8.0, 60.0, 60.0, 300.0));
   std::printf("sun 3 deg: %d of %d pixels darker by a tenth or more; sun 60 deg: %d of %d\n",
@@ -111,9 +122,14 @@ double share(const std::vector<double>& loss, double above) {
 
 TEST(TerrainShadowsGLTest, TheAirInTheShadowOfTheRidgesLosesTheSunsLight) {
   auto context = GlContext::create_headless();
-  Body earth = load_body(data_dir() / "planets" / "earth.json");
-  // 3000 m over the Alps, facing a sun 1.5 deg up in the west-north-west,
-  // looking a little down over the ridges toward it.
+  // The procedural Earth, whose ridges this scene was found over: ETOPO5's
+  // Alps, smoothed over 9 km, shade too little air for the comparison at
+  // this place (1700 m over their ground, 1.2 % of the pixels lose 5 % by
+  // the froxels, 0.1 % by the march; at 800 m and 300 m fewer).
+  Body earth = load_body(project_root() / "tests/data/planets/earth_procedural.json");
+  // 3000 m over the Alps (about 1700 m over this body's ground), facing a
+  // sun 1.5 deg up in the west-north-west, looking a little down over the
+  // ridges toward it.
   Geodetic place{glm::radians(46.52), glm::radians(7.95), 3000.0};
   PlaceView view = view_from_place(earth.shape, place, 295.0, -3.0, 60.0, 1.5, 300.0);
   std::vector<double> hillaire = air_shadow_loss(earth, view, "hillaire");
@@ -145,7 +161,8 @@ TEST(TerrainShadowsGLTest, TheAirInTheShadowOfTheRidgesLosesTheSunsLight) {
 
 TEST(TerrainShadowsGLTest, TheAirOfAMarsHollowBelowTheDatumIsShadedToo) {
   auto context = GlContext::create_headless();
-  Body mars = load_body(data_dir() / "planets" / "mars.json");
+  // The procedural Mars, whose hollow this scene was found in.
+  Body mars = load_body(project_root() / "tests/data/planets/mars_procedural.json");
   // terrain_mars's frame 1: 3 km over ground 750 m below the datum (the
   // atmosphere's bottom sphere), facing a sun 10 deg up. Every shadow of
   // this relief lies below the datum (the highest at -452 m), so before

@@ -155,8 +155,8 @@ TEST(CraterMarksTest, CratersLieWhereEveryCompilerPutsThem) {
   // Mars's heights at four places, as the shipped captures have them: a
   // crater's centre and radius are drawn in one order by every compiler
   // (they once came from one expression, whose arguments GCC and Clang
-  // evaluate in opposite orders).
-  Body mars = load_body(data_dir() / "planets" / "mars.json");
+  // evaluate in opposite orders). The procedural Mars, whose craters they are.
+  Body mars = load_body(project_root() / "tests/data/planets/mars_procedural.json");
   const TerrainConfig config = parse_terrain(mars);
   // Four places on the floors of the craters of 0.6-3 km radius.
   const glm::dvec3 at[4] = {{0.043316143479675696, -0.53169791272852962, 0.84582565657124209},

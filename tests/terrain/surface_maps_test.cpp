@@ -178,7 +178,8 @@ class EarthImageryTest : public ::testing::Test {
       GTEST_SKIP() << kEarthDay << " is not installed (Debian's xplanet-images; "
                    << "scripts/install-deps.sh installs it)";
     }
-    earth_ = load_body(data_dir() / "planets" / "earth.json");
+    // The procedural Earth, whose noise the imagery's land mask shapes.
+    earth_ = load_body(project_root() / "tests/data/planets/earth_procedural.json");
     config_ = parse_terrain(earth_);
     ASSERT_NE(config_.maps, nullptr);
   }

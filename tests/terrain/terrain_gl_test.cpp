@@ -59,7 +59,7 @@ TEST_F(TerrainGLTest, NoBackgroundShowsThroughTheGroundFromManyViewpoints) {
   // views; leaving out skirts and morphing together did not (the gaps they
   // close stayed narrower than a pixel in these views).
   for (double budget : {1.0, 8.0}) {
-    for (const char* name : {"earth", "mars"}) {
+    for (const char* name : {"earth", "mars", "moon"}) {
       Body body = load_body(data_dir() / "planets" / (std::string(name) + ".json"));
       TerrainOptions options;
       options.pixel_budget = budget;
@@ -71,7 +71,10 @@ TEST_F(TerrainGLTest, NoBackgroundShowsThroughTheGroundFromManyViewpoints) {
           // Every pixel of these views is ground: the image's top corners
           // look 7.4 degrees below level (14.8 from 60 km), below the
           // horizon (3.9 degrees down from 8 km on Mars, 10.7 from 60 km).
-          for (double pitch : {height < 10e3 ? -40.0 : -50.0, -80.0}) {
+          // The Moon's horizon dips 14.8 degrees from 60 km, just where
+          // those corners look: there the view looks 10 degrees lower.
+          const bool moon = std::string(name) == "moon";
+          for (double pitch : {height < 10e3 ? -40.0 : moon ? -60.0 : -50.0, -80.0}) {
             Geodetic place{glm::radians(30.0 + heading / 20.0), glm::radians(heading / 7.0), 0.0};
             double ground = 0;
             terrain.surface().point(glm::normalize(geodesy.body_from_geodetic(place)), &ground);

@@ -17,9 +17,13 @@ namespace planet {
 namespace {
 namespace PLANET_TEST_ID {
 
-TerrainSurface load_surface(const std::string& name) {
-  Body body = load_body(data_dir() / "planets" / (name + ".json"));
+TerrainSurface load_surface_file(const std::filesystem::path& file) {
+  Body body = load_body(file);
   return TerrainSurface(body.shape, parse_terrain(body));
+}
+
+TerrainSurface load_surface(const std::string& name) {
+  return load_surface_file(data_dir() / "planets" / (name + ".json"));
 }
 
 TEST(CubeSphereTest, TangentWarpKeepsCellAreasWithinFactor1_5) {
@@ -132,8 +136,10 @@ TEST(TileMeshTest, CoastlinesCrossTheTrianglesWhereTheGroundMeetsTheSea) {
   // and 60 km): the share of the ground the triangles put on the wrong
   // side of the coast, against the share when whole vertices were sea or
   // land and their colours blended across the triangles (the coast drawn
-  // in steps along the grid).
-  TerrainSurface earth = load_surface("earth");
+  // in steps along the grid). The procedural Earth's coasts: the noise
+  // shaped by the imagery's land mask.
+  TerrainSurface earth =
+      load_surface_file(project_root() / "tests/data/planets/earth_procedural.json");
   ASSERT_TRUE(earth.config().sea_level);
   const double sea_level = *earth.config().sea_level;
   std::mt19937 rng(11);
