@@ -3,6 +3,8 @@
 // file refused in one line naming it.
 #include "terrain/cage_height.h"
 #include "terrain/terrain_config.h"
+#include "terrain/terrain_surface.h"
+#include "terrain/tile_mesh.h"
 
 #include "sim/body.h"
 
@@ -137,6 +139,30 @@ TEST(ErosShapeTest, RotationIsTheIauElements) {
     EXPECT_NEAR(z.z, 1.0, 1e-12) << "at t = " << t;
   }
   EXPECT_FALSE(body.has_atmosphere());
+}
+
+// A tile's skirts hang inside the body. Over Eros the crack bound they are
+// sized by reaches tens of km on the coarse levels (its walls are steep
+// against its sphere); hung to that depth they passed the centre and came
+// out of the far side, a sheet over the ground in front that hid every
+// part of the body below its 8.42 km sphere. Each skirt vertex must stay on
+// its edge vertex's side of the centre and under the ground there.
+TEST(ErosShapeTest, SkirtsStayInsideTheBody) {
+  Body body = eros_body();
+  TerrainSurface surface(body.shape, parse_terrain(body));
+  for (int level : {0, 1, 2}) {
+    for (int face = 0; face < 6; ++face) {
+      TileKey key{face, level, 0, 0};
+      TileMesh tile = build_tile(surface, key);
+      const int n = kTileGrid;
+      for (size_t k = size_t(n * n); k < tile.vertices.size(); ++k) {
+        glm::dvec3 p = tile.center_body + glm::dvec3(tile.vertices[k].offset);
+        double ground = glm::length(surface.point(glm::normalize(p)));
+        ASSERT_LT(glm::length(p), ground + 1.0) << key.name() << " skirt vertex " << k;
+        ASSERT_GT(glm::dot(p, tile.center_body), 0.0) << key.name() << " skirt vertex " << k;
+      }
+    }
+  }
 }
 
 // A broken copy of the shape file, behind a body that names it: refused
