@@ -2,11 +2,14 @@
 // (size, frame), its rotation from the IAU's elements, and every bad shape
 // file refused in one line naming it.
 #include "terrain/cage_height.h"
+#include "terrain/ground.h"
 #include "terrain/terrain_config.h"
 #include "terrain/terrain_surface.h"
 #include "terrain/tile_mesh.h"
 
 #include "sim/body.h"
+#include "sim/flight_script.h"
+#include "sim/geodesy.h"
 
 #include "core/data_paths.h"
 #include "core/error.h"
@@ -163,6 +166,30 @@ TEST(ErosShapeTest, SkirtsStayInsideTheBody) {
       }
     }
   }
+}
+
+// The shipped landing (data/flights/eros_landing.json) comes down into the
+// saddle on Eros's concave side, whose floor lies 4.44 km under the 8.42 km
+// sphere, deeper than half its radius (the bound on keyframes' heights
+// before): every frame, not only the keyframes, stays above the ground,
+// and the last stands 2 m over it in daylight.
+TEST(ErosShapeTest, TheLandingStaysAboveTheSaddlesFloor) {
+  FlightScript script =
+      load_flight_script(data_dir() / "flights" / "eros_landing.json", terrain_ground());
+  FlightPath path(script);
+  GroundHeight ground = terrain_ground();
+  for (int i = 0; i < script.frame_count(); ++i) {
+    Geodetic g = path.place_at(script.frame_time(i));
+    double clearance = g.height - ground(script.body, g);
+    EXPECT_GT(clearance, 1.0) << "frame " << i;
+  }
+  Geodetic last = path.place_at(script.duration());
+  double floor = ground(script.body, last);
+  EXPECT_LT(floor, -0.5 * script.body.shape.polar_radius());
+  EXPECT_NEAR(last.height - floor, 2.0, 1e-6);
+  // The sun over the sphere's horizon there (the ground's own slope aside).
+  glm::dvec3 up = Geodesy(script.body.shape).body_from_enu(last)[2];
+  EXPECT_GT(glm::dot(path.sun_dir_at(script.duration()), up), 0.2);
 }
 
 // A broken copy of the shape file, behind a body that names it: refused
