@@ -131,6 +131,7 @@ void BM_TerrainTileBuild(benchmark::State& state, const char* name) {
 BENCHMARK_CAPTURE(BM_TerrainTileBuild, earth, "earth")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_TerrainTileBuild, mars, "mars")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_TerrainTileBuild, asteroid, "asteroid")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_TerrainTileBuild, eros, "eros")->Unit(benchmark::kMillisecond);
 
 // The part of a tile build that is the shadows' own: sampling the grid's
 // border and marching its horizons (the parent's far horizon kept, as a
