@@ -1,5 +1,6 @@
 #include "apps/cli.h"
 
+#include "apps/cli_options.h"
 #include "apps/commands.h"
 #include "core/error.h"
 #include "core/version.h"
@@ -29,7 +30,8 @@ void report(const std::exception& e) {
 }  // namespace
 
 std::unique_ptr<CLI::App> make_cli() {
-  auto app = std::make_unique<CLI::App>("planet: a planetary flight and space simulator");
+  auto app = std::make_unique<CLI::App>(
+      "planet: a planetary flight and space simulator. Bodies: " + body_list_text() + ".");
   app->require_subcommand(1);
   app->set_version_flag("--version", "planet " + planet_version(), "Print the version and exit");
   // Each command inherits this footer unless it sets its own. The table of

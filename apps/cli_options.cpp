@@ -1,5 +1,6 @@
 #include "apps/cli_options.h"
 
+#include "core/data_paths.h"
 #include "core/error.h"
 #include "gl/schedule.h"
 #include "sim/body.h"
@@ -72,10 +73,25 @@ std::string longitude_text(double lon_deg, int decimals) {
   return fmt::format("{:.{}f} deg E ({:.{}f} deg W)", lon_deg, decimals, 360.0 - lon_deg, decimals);
 }
 
+std::string body_list_text() {
+  std::vector<std::string> items;
+  for (const std::string& name : shipped_body_names()) {
+    // A body file that does not load is listed by its name alone: the
+    // command that names it says what is wrong with it.
+    std::string summary;
+    try {
+      summary = load_body(data_dir() / "planets" / (name + ".json")).summary;
+    } catch (const std::exception&) {
+    }
+    items.push_back(summary.empty() ? name : fmt::format("{} [{}]", name, summary));
+  }
+  return fmt::format("{}", fmt::join(items, ", "));
+}
+
 std::string body_option_help(const std::string& what) {
-  std::vector<std::string> names = shipped_body_names();
-  if (names.empty()) return what;
-  return fmt::format("{} ({})", what, fmt::join(names, ", "));
+  std::string bodies = body_list_text();
+  if (bodies.empty()) return what;
+  return fmt::format("{} ({})", what, bodies);
 }
 
 }  // namespace planet::apps

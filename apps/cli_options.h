@@ -86,7 +86,11 @@ std::string longitude_text(double lon_deg, int decimals);
 // renderer. A bad value: one line naming it, exit 2, before any work.
 void add_schedule_option(CLI::App& command);
 
-// "Body name or file (asteroid, earth, ...)", the names from data/planets.
+// The bodies of data/planets by name, each with its file's summary where it
+// gives one: "asteroid [a tiny planet ...], earth, ...".
+std::string body_list_text();
+
+// "Body name or file (asteroid [...], earth, ...)": body_list_text().
 std::string body_option_help(const std::string& what = "Body name or file");
 
 }  // namespace planet::apps

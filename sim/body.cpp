@@ -16,6 +16,7 @@ Body load_body(const std::filesystem::path& file) {
   body.file = file;
   body.name = root.string("name");
   if (body.name.empty()) root.fail("name", "must not be empty");
+  body.summary = root.string_or("summary", "");
 
   JsonObject shape = root.object("shape");
   std::string type = shape.string("type");

@@ -22,6 +22,10 @@ struct Ellipsoid {
 
 struct Body {
   std::string name;
+  // What the body is, in a few words, where its name does not say it
+  // ("asteroid" is a tiny planet, not a real one): the bodies' lists in
+  // --help give it. Empty where the file gives none.
+  std::string summary;
   std::filesystem::path file;
   Ellipsoid shape;
   // The "atmosphere" object of the body's file, parsed by the atmosphere

@@ -218,7 +218,14 @@ FlightScript load_flight_script(const std::filesystem::path& file, const GroundH
   Geodesy geodesy(s.body.shape);
   auto keys = root.objects("keyframes");
   if (keys.empty()) root.fail("keyframes", "must hold at least one keyframe");
-  double min_height = -s.body.shape.polar_radius() * 0.5;
+  // The geodetic mapping is one-to-one above the ellipsoid's evolute, whose
+  // shallowest point lies b^2 / a under the equator (a sphere's: its
+  // centre); three quarters of that depth are allowed. Half the polar
+  // radius, the bound before, put the deepest ground of Eros (5.4 km under
+  // its 8.42 km sphere, 0.64 of it) out of reach; 5000 km under Earth's
+  // surface stays refused.
+  const double a = s.body.shape.equatorial_radius, b = s.body.shape.polar_radius();
+  double min_height = -0.75 * b * b / a;
   bool orbit_before = false;
   for (size_t i = 0; i < keys.size(); ++i) {
     JsonObject& k = keys[i];

@@ -116,7 +116,7 @@ std::vector<glm::dvec3> cage_limit_points(const ObjCage& cage, int level, const 
 }
 
 CageHeight::CageHeight(const ObjCage& cage, const std::string& name, double body_radius,
-                       std::vector<NoiseLayer> layers)
+                       std::vector<NoiseLayer> layers, std::optional<double> units_m)
     : body_radius_(body_radius), noise_(body_radius, std::move(layers), 0.0, std::nullopt) {
   // Refine until at least 5 x 10^4 faces: as fine as the table's 6 x 128^2 cells
   // on any reasonable cage, and at least once so that every face is a quad.
@@ -127,9 +127,15 @@ CageHeight::CageHeight(const ObjCage& cage, const std::string& name, double body
   const Far::TopologyLevel& last = refiner->GetLevel(level);
   const Far::TopologyLevel& before = refiner->GetLevel(level - 1);
 
+  // A measured model's origin is its body's centre of mass, on the spin
+  // axis; the limit points' centroid is not (Eros's 7790-plate model's
+  // vertices average 0.33 km from it), and moving there would wobble the
+  // turning body.
   glm::dvec3 centre(0.0);
-  for (const Point& p : limit) centre += p.p;
-  centre /= double(limit.size());
+  if (!units_m) {
+    for (const Point& p : limit) centre += p.p;
+    centre /= double(limit.size());
+  }
 
   // How far the flat faces of the refined mesh stray from the limit
   // surface: each face of the level before splits into four, and its
@@ -209,10 +215,9 @@ CageHeight::CageHeight(const ObjCage& cage, const std::string& name, double body
         if (r <= 0) {
           glm::dvec3 q = glm::normalize(grid_direction(face, i, j));
           throw InputError(fmt::format(
-              "{}: the centroid of the cage's limit surface lies outside it (the ray towards "
-              "({:.3f}, {:.3f}, {:.3f}) meets no surface); the cage must be star-shaped about its "
-              "centre",
-              name, q.x, q.y, q.z));
+              "{}: the {} lies outside the cage's limit surface (the ray towards "
+              "({:.3f}, {:.3f}, {:.3f}) meets no surface); the cage must be star-shaped about it",
+              name, units_m ? "origin" : "centroid", q.x, q.y, q.z));
         }
         double l = glm::length(grid_direction(face, i, j));
         double w = 1.0 / (l * l * l);
@@ -221,7 +226,7 @@ CageHeight::CageHeight(const ObjCage& cage, const std::string& name, double body
       }
     }
   }
-  scale_ = body_radius_ / (sum / weight);
+  scale_ = units_m ? *units_m : body_radius_ / (sum / weight);
   for (double& r : table_) r *= scale_;
   chord_error *= scale_;
   for (const Point& p : limit) limit_points_.push_back((p.p - centre) * scale_);

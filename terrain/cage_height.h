@@ -2,10 +2,15 @@
 // Heights of a body shaped like its control cage: the Catmull-Clark limit
 // surface (Catmull and Clark 1978) of a closed OBJ cage, evaluated with
 // OpenSubdiv, scaled so that its mean radius is the body's radius, and
-// displaced by noise layers as in ProceduralHeight.
+// displaced by noise layers as in ProceduralHeight. A measured shape model
+// (433 Eros) instead keeps its own frame and size: given the metres per
+// unit of its file, the cage is neither moved nor scaled, so that its
+// origin (the body's centre of mass) and axes (the pole, the prime
+// meridian) stay those of the body's rotation.
 //
 // The limit surface is assumed star-shaped about the centroid of its limit
-// points: height is a function of direction. Where a ray from the centre
+// points (about the origin, for a model in its own frame): height is a
+// function of direction. Where a ray from the centre
 // meets the surface more than once (an overhang), the outermost crossing
 // counts; a cage whose centre lies outside its own surface is rejected.
 //
@@ -20,6 +25,7 @@
 #include "terrain/obj_cage.h"
 #include "terrain/procedural_height.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,10 +40,12 @@ class CageHeight : public HeightSource {
  public:
   static constexpr int kTableCells = 128;  // table cells per cube face edge
 
-  // `name` (the file) is for messages; `body_radius` is the radius the
-  // cage's mean radius is scaled to and heights are measured from.
+  // `name` (the file) is for messages; `body_radius` is the radius
+  // heights are measured from, and the one the cage's mean radius is scaled
+  // to unless `units_m` (metres per cage unit) keeps the cage's own origin
+  // and size.
   CageHeight(const ObjCage& cage, const std::string& name, double body_radius,
-             std::vector<NoiseLayer> layers);
+             std::vector<NoiseLayer> layers, std::optional<double> units_m = std::nullopt);
 
   double height(const glm::dvec3& dir_body) const override;
   HeightRange range_near(const glm::dvec3& dir_body, double radius) const override;
@@ -52,7 +60,8 @@ class CageHeight : public HeightSource {
   double surface_radius(const glm::dvec3& dir_body) const;
   // A bound on |surface_radius - the limit surface's radius|, metres.
   double table_error() const { return table_error_; }
-  // The refined mesh's limit points, scaled and relative to the centre: the
+  // The refined mesh's limit points, scaled and relative to the centre (the
+  // origin, for a cage in its own frame): the
   // direct evaluation the table is checked against.
   const std::vector<glm::dvec3>& limit_points() const { return limit_points_; }
   // Metres per cage unit.

@@ -16,6 +16,7 @@
 #include <cstdio>
 #include <map>
 #include <mutex>
+#include <optional>
 
 namespace planet {
 
@@ -208,9 +209,14 @@ std::shared_ptr<const HeightSource> parse_heights(JsonObject& o, const Body& bod
     if (o.has("layers")) {
       for (JsonObject& l : o.objects("layers")) layers.push_back(parse_layer(l));
     }
+    // A measured shape model in the body's own frame gives its file's unit
+    // (1000 for km) and is taken as it is; an artistic cage leaves it out
+    // and is fitted to the body's radius.
+    std::optional<double> units_m;
+    if (o.has("units_m")) units_m = o.number("units_m", 1e-3, 1e6);
     o.finish();
     return std::make_shared<CageHeight>(read_obj_cage(file), file.string(), mean_radius,
-                                        std::move(layers));
+                                        std::move(layers), units_m);
   }
   o.fail("type",
          fmt::format("'{}' is not a height source (procedural, grid, height_map, cage)", type));

@@ -130,7 +130,12 @@ TileMesh build_tile(const TerrainSurface& surface, const TileKey& key) {
       TileVertex v = tile.vertices[size_t(edge_vertex(edge, k))];
       glm::dvec3 x = tile.center_body + glm::dvec3(v.offset);
       glm::dvec3 down = -ellipsoid_normal(surface.shape(), x);
-      v.offset = glm::vec3(x + depth * down - tile.center_body);
+      // Never past half way to the centre: a shape far from its ellipsoid
+      // (Eros, whose steep walls make the bound tens of km at the coarse
+      // levels) would otherwise hang skirts through the body and out of
+      // its far side, over the ground in front. Inside a body star-shaped
+      // about its centre, a skirt that stops short of it stays hidden.
+      v.offset = glm::vec3(x + std::min(depth, 0.5 * glm::length(x)) * down - tile.center_body);
       tile.vertices[size_t(N * N + edge * N + k)] = v;
     }
   }

@@ -70,6 +70,16 @@ $(grep -i "body\|bodies" "$work/out.txt")"
   done
   expect "vulcan: no such body file, and no body of that name in $root/data/planets (moon, selene)" \
     env PLANET_ROOT="$root" "$planet" probe ground --planet vulcan --lat 0 --lon 0
+  # The shipped lists say what each body is where its name does not: the
+  # asteroid is a tiny planet, Eros the real one (their files' summaries).
+  for command in "" "probe ground"; do
+    # shellcheck disable=SC2086
+    succeed "$planet" $command --help
+    grep -q "asteroid \[a 30 km tiny planet under a dense purple atmosphere, after Hillaire 2020; not a real asteroid (eros is one)\]" "$work/out.txt" ||
+      fail "planet $command --help does not say the asteroid is a tiny planet"
+    grep -q "eros \[the real asteroid 433 Eros" "$work/out.txt" ||
+      fail "planet $command --help does not say eros is the real asteroid"
+  done
   # Mars' maps count longitudes 0-360 east: Jezero's 77.5 E, Olympus
   # Mons' 226.2 E (133.8 W).
   succeed "$planet" probe ground --planet mars --lat 18.65 --lon 226.2

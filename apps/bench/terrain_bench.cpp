@@ -156,6 +156,7 @@ BENCHMARK_CAPTURE(BM_TerrainTileBuild, earth, "earth")->Unit(benchmark::kMillise
 BENCHMARK_CAPTURE(BM_TerrainTileBuild, mars, "mars")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_TerrainTileBuild, moon, "moon")->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(BM_TerrainTileBuild, asteroid, "asteroid")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_TerrainTileBuild, eros, "eros")->Unit(benchmark::kMillisecond);
 
 // The part of a tile build that is the shadows' own: sampling the grid's
 // border and marching its horizons (the parent's far horizon kept, as a

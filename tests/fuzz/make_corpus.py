@@ -95,6 +95,16 @@ f 1 4 3 2\nf 5 6 7 8\nf 1 2 6 5\nf 2 3 7 6\nf 3 4 8 7\nf 4 1 5 8\n"""
     put("obj_cage", "")
     put("obj_cage", asteroid[: len(asteroid) // 2])
     put("obj_cage", bytes(range(256)))
+    # A measured model as shipped (Eros's: comments, E-notation, 3897
+    # vertices): its head, cut in a vertex line, and a closed tetrahedron in
+    # its number format with a NaN.
+    eros = (root / "data/shapes/eros/eros007790.obj").read_text()
+    put("obj_cage", eros[:2000])
+    tetra = ("v    1.00000E+00   0.00000E+00  -7.07107E-01\nv   -1.00000E+00   0.00000E+00  -7.07107E-01\n"
+             "v    0.00000E+00   1.00000E+00   7.07107E-01\nv    0.00000E+00  -1.00000E+00   7.07107E-01\n"
+             "f 1 3 2\nf 1 2 4\nf 2 3 4\nf 3 1 4\n")
+    put("obj_cage", eros.split("\nv ")[0] + "\n" + tetra)
+    put("obj_cage", tetra.replace("1.00000E+00", "nan", 1))
 
 
 def height_map_seeds(scratch):

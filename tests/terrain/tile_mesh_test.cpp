@@ -105,7 +105,7 @@ TEST(TileMeshTest, OffsetsAreSmallAndEvenVerticesMatchTheParent) {
 TEST(TileMeshTest, MeasuredErrorStaysUnderTheLevelBound) {
   // Skirts are sized by error_bound(level): check it on tiles coarse and
   // fine, on each body.
-  for (const char* name : {"earth", "mars", "asteroid"}) {
+  for (const char* name : {"earth", "mars", "asteroid", "eros"}) {
     TerrainSurface s = load_surface(name);
     for (int level : {2, 6, 10, 14, 18}) {
       if (level > s.config().max_level) continue;
