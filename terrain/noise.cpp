@@ -56,4 +56,52 @@ double gradient_noise(const glm::dvec3& p, uint32_t seed) {
   return lerp(lerp(x00, x10, v), lerp(x01, x11, v), w);
 }
 
+namespace {
+
+uint32_t edge_hash(int64_t x, int64_t y, uint32_t seed) {
+  uint64_t h = uint64_t(x) * 0x9E3779B97F4A7C15ull ^ uint64_t(y) * 0xC2B2AE3D27D4EB4Full ^
+               uint64_t(seed) * 0x165667B19E3779F9ull;
+  h ^= h >> 31;
+  h *= 0x7FB5D329728EA185ull;
+  h ^= h >> 27;
+  h *= 0x81DADEF4BC2DD44Dull;
+  h ^= h >> 33;
+  return uint32_t(h);
+}
+
+constexpr double kDiagonal = 0.70710678118654752;
+constexpr double kEdgeGradients[8][2] = {{1, 0},  {-1, 0}, {0, 1},  {0, -1},
+                                         {kDiagonal, kDiagonal},  {-kDiagonal, kDiagonal},
+                                         {kDiagonal, -kDiagonal}, {-kDiagonal, -kDiagonal}};
+
+int64_t modulo(int64_t a, int64_t n) { return ((a % n) + n) % n; }
+double fade_slope(double t) { return 30.0 * t * t * (t - 1.0) * (t - 1.0); }
+
+}  // namespace
+
+EdgeNoise edge_noise(double x, double y, int axis, int64_t m, int64_t sample, int64_t period,
+                     uint32_t seed) {
+  const double fx = std::floor(x), fy = std::floor(y);
+  const auto X = int64_t(fx), Y = int64_t(fy);
+  const double tx = x - fx, ty = y - fy;
+  const double wx[2] = {1.0 - fade(tx), fade(tx)}, wy[2] = {1.0 - fade(ty), fade(ty)};
+  const double sx = fade_slope(tx), sy = fade_slope(ty);
+  const double dwx[2] = {-sx, sx}, dwy[2] = {-sy, sy};
+  EdgeNoise n;
+  for (int cy = 0; cy < 2; ++cy) {
+    for (int cx = 0; cx < 2; ++cx) {
+      const int64_t a = modulo(X + cx, period), b = Y + cy;
+      const int64_t am = modulo(a, m), bm = modulo(b, m);
+      if ((axis == 0 ? am : bm) == 0 || (am == sample && bm == sample)) continue;
+      const double* g = kEdgeGradients[edge_hash(a, b, seed) & 7u];
+      const double dx = tx - cx, dy = ty - cy;
+      const double dot = g[0] * dx + g[1] * dy;
+      const double w = wx[cx] * wy[cy];
+      n.value += w * dot;
+      n.slope += axis == 0 ? dwx[cx] * wy[cy] * dot + w * g[0] : wx[cx] * dwy[cy] * dot + w * g[1];
+    }
+  }
+  return n;
+}
+
 }  // namespace planet

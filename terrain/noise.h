@@ -20,3 +20,28 @@ constexpr double kNoiseMaxSlope = 3.2;
 constexpr double kNoiseMaxCurvature = 16.0;
 
 }  // namespace planet
+
+namespace planet {
+
+// Two-dimensional gradient noise on the integer lattice that vanishes
+// along chosen lattice lines, for detail that must average to zero over
+// the cells those lines bound (terrain/grid_detail.cpp). Lattice points
+// (a, b) with a = 0 modulo `m` (axis 0) or b = 0 modulo `m` (axis 1),
+// and those with a = b = `sample` modulo `m`, have no gradient; the rest
+// one of eight unit gradients (the axes and the diagonals). The noise is
+// then zero all along the chosen lines, its slope across them too, and
+// both at the `sample` points. Columns wrap every `period` points.
+struct EdgeNoise {
+  double value = 0, slope = 0;  // the noise and its derivative along its axis
+};
+EdgeNoise edge_noise(double x, double y, int axis, int64_t m, int64_t sample, int64_t period,
+                     uint32_t seed);
+
+// Bounds on the edge noise's value, its first derivatives and its second
+// derivatives along the axes (checked by sampling in the tests: the
+// largest found are given there).
+constexpr double kEdgeNoiseMax = 0.8;
+constexpr double kEdgeNoiseMaxSlope = 2.6;
+constexpr double kEdgeNoiseMaxCurvature = 11.0;
+
+}  // namespace planet
