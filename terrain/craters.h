@@ -121,7 +121,9 @@ void for_each_surface_crater(const glm::dvec3& p, double cell, double density, u
   const glm::dvec3 floor = glm::floor(q);
   const glm::dvec3 frac = q - floor;
   const double reach = kMaxRadius * kReach;
-  auto lo = [&](double t, double na) { return t < reach + kShellHalfWidth * std::abs(na) ? -1 : 0; };
+  auto lo = [&](double t, double na) {
+    return t < reach + kShellHalfWidth * std::abs(na) ? -1 : 0;
+  };
   auto hi = [&](double t, double na) {
     return t > 1.0 - reach - kShellHalfWidth * std::abs(na) ? 1 : 0;
   };
@@ -175,8 +177,8 @@ inline void add_marks(const glm::dvec3& q, const glm::dvec3& c, double r, uint32
         glm::cross(n, std::abs(n.z) < 0.9 ? glm::dvec3(0, 0, 1) : glm::dvec3(1, 0, 0)));
     glm::dvec3 e2 = glm::cross(n, e1);
     double azimuth = std::atan2(glm::dot(v, e2), glm::dot(v, e1));
-    double streaks =
-        0.5 + 0.25 * std::cos(7.0 * azimuth + phase) + 0.25 * std::cos(12.0 * azimuth + 2.0 * phase);
+    double streaks = 0.5 + 0.25 * std::cos(7.0 * azimuth + phase) +
+                     0.25 * std::cos(12.0 * azimuth + 2.0 * phase);
     double blanket = smoothstep(0.95, 1.15, x) * (1.0 - smoothstep(1.2, kReach, x));
     marks.ejecta =
         std::max(marks.ejecta, shows * youth * blanket * (0.3 + 0.7 * streaks * streaks));
