@@ -234,12 +234,12 @@ double GridDetail::height(const glm::dvec3& dir_body) const {
 }
 
 double GridDetail::relief_bound(double a0, double gain) const {
-  // |d_k| <= (|A_u| |F| + |A_v| |G|) / m + |A| (|F_x| + |G_y|), with A's
-  // slope at most the fade's times the largest node amplitude.
+  // |d_k| <= (|A_u| |F| + |A_v| |G|) / m + |A| |F_x + G_y|, with A's slope
+  // at most the fade's times the largest node amplitude.
   double bound = 0, a = a0;
   for (int k = 1; k <= spec_.octaves; ++k) {
     const double m = double(int64_t(1) << k);
-    bound += a * (2.0 * kFadeMaxSlope * kEdgeNoiseMax / m + 2.0 * kEdgeNoiseMaxSlope);
+    bound += a * (2.0 * kFadeMaxSlope * kEdgeNoiseMax / m + kEdgeDivergenceMax);
     a *= gain;
   }
   return bound;
@@ -273,21 +273,23 @@ HeightRange GridDetail::range_near(const glm::dvec3& dir_body, double radius) co
 double GridDetail::interpolation_error(double spacing) const {
   // Each octave's chord misses it by at most half its slope bound times
   // the spacing, and never by more than twice its bound. In sample units,
-  // |d d_k / du| <= a_k [(|A_uu| + |A_uv|) |F| / m + 3 |A_u| |F_x| + 2 m |A| |F_xx|];
-  // in metres, over columns narrowed by cos(latitude) (the polar fade
-  // bounds the amplitude over it) and rows stretched by at most 1 % on a
-  // geodetic grid.
+  // |d d_k / du| <= a_k [(|A_uu| + |A_uv|) |F| / m + |A_u| (|F_x| + |G_x|
+  // + |F_x + G_y|) + m |A| |d (F_x + G_y) / dx|], and so along v; in
+  // metres, over columns narrowed by cos(latitude) (the polar fade bounds
+  // the amplitude over it) and rows stretched by at most 1 % on a geodetic
+  // grid, the two at right angles.
   const double grid = GridHeight::interpolation_error(spacing);
-  const double per_metre = 1.01 * (taper_over_cos_ / metres_per_column_ + 1.0 / metres_per_row_);
+  const double per_metre =
+      1.01 * std::hypot(taper_over_cos_ / metres_per_column_, 1.0 / metres_per_row_);
   const double gain = std::max(spec_.gain_smooth, spec_.gain_rough);
   double e = 0, a = spec_.max_amplitude_m;
   for (int k = 1; k <= spec_.octaves; ++k) {
     const double m = double(int64_t(1) << k);
-    const double bound = a * (2.0 * kFadeMaxSlope * kEdgeNoiseMax / m + 2.0 * kEdgeNoiseMaxSlope);
-    const double slope =
-        a * per_metre *
-        ((kFadeMaxCurvature + kFadeMaxSlope * kFadeMaxSlope) * kEdgeNoiseMax / m +
-         3.0 * kFadeMaxSlope * kEdgeNoiseMaxSlope + 2.0 * m * kEdgeNoiseMaxCurvature);
+    const double bound = a * (2.0 * kFadeMaxSlope * kEdgeNoiseMax / m + kEdgeDivergenceMax);
+    const double slope = a * per_metre *
+                         ((kFadeMaxCurvature + kFadeMaxSlope * kFadeMaxSlope) * kEdgeNoiseMax / m +
+                          kFadeMaxSlope * (2.0 * kEdgeNoiseMaxSlope + kEdgeDivergenceMax) +
+                          m * kEdgeDivergenceMaxSlope);
     e += std::min(2.0 * bound, 0.5 * slope * spacing);
     a *= gain;
   }

@@ -28,11 +28,11 @@ struct GridDetailSpec {
   // the relief is nil to gain_rough from rough_relief_m on.
   double relief_ratio = 0.2;
   double min_amplitude_m = 2.0;
-  double max_amplitude_m = 500.0;
+  double max_amplitude_m = 400.0;
   double rough_relief_m = 1500.0;
-  double gain_smooth = 0.4, gain_rough = 0.6;
+  double gain_smooth = 0.4, gain_rough = 0.5;
   double sea_floor = 0.1;  // the amplitude's factor where the sample lies under the sea
-  int octaves = 10;
+  int octaves = 8;
   uint32_t seed = 1;
   // Craters: none where crater_octaves is 0. The largest craters' lattice
   // is the grid's cell (radii 0.1 to 0.25 of it), each next octave's half

@@ -22,18 +22,30 @@ uint32_t hash(int64_t x, int64_t y, int64_t z, uint32_t seed) {
 // Perlin 2002: the gradient is one of the 12 cube-edge directions.
 double grad(uint32_t h, double x, double y, double z) {
   switch (h % 12u) {
-    case 0: return x + y;
-    case 1: return -x + y;
-    case 2: return x - y;
-    case 3: return -x - y;
-    case 4: return x + z;
-    case 5: return -x + z;
-    case 6: return x - z;
-    case 7: return -x - z;
-    case 8: return y + z;
-    case 9: return -y + z;
-    case 10: return y - z;
-    default: return -y - z;
+    case 0:
+      return x + y;
+    case 1:
+      return -x + y;
+    case 2:
+      return x - y;
+    case 3:
+      return -x - y;
+    case 4:
+      return x + z;
+    case 5:
+      return -x + z;
+    case 6:
+      return x - z;
+    case 7:
+      return -x - z;
+    case 8:
+      return y + z;
+    case 9:
+      return -y + z;
+    case 10:
+      return y - z;
+    default:
+      return -y - z;
   }
 }
 
@@ -70,9 +82,14 @@ uint32_t edge_hash(int64_t x, int64_t y, uint32_t seed) {
 }
 
 constexpr double kDiagonal = 0.70710678118654752;
-constexpr double kEdgeGradients[8][2] = {{1, 0},  {-1, 0}, {0, 1},  {0, -1},
-                                         {kDiagonal, kDiagonal},  {-kDiagonal, kDiagonal},
-                                         {kDiagonal, -kDiagonal}, {-kDiagonal, -kDiagonal}};
+constexpr double kEdgeGradients[8][2] = {{1, 0},
+                                         {-1, 0},
+                                         {0, 1},
+                                         {0, -1},
+                                         {kDiagonal, kDiagonal},
+                                         {-kDiagonal, kDiagonal},
+                                         {kDiagonal, -kDiagonal},
+                                         {-kDiagonal, -kDiagonal}};
 
 int64_t modulo(int64_t a, int64_t n) { return ((a % n) + n) % n; }
 double fade_slope(double t) { return 30.0 * t * t * (t - 1.0) * (t - 1.0); }

@@ -98,11 +98,27 @@ TEST(GridDetailTest, EdgeNoiseStaysWithinItsBounds) {
       }
     }
   }
-  std::printf("edge noise: largest value %.3f, slope %.3f, curvature %.3f\n", max_value, max_slope,
-              max_curvature);
+  // The divergence F_x + G_y of a pair (the detail's octave), and its slopes.
+  double max_div = 0, max_div_slope = 0;
+  for (int k = 0; k < 40000; ++k) {
+    double x = u(rng), y = u(rng);
+    auto div = [&](double dx, double dy) {
+      return edge_noise(x + dx, y + dy, 0, 4, 2, 1 << 20, 3u).slope +
+             edge_noise(x + dx, y + dy, 1, 4, 2, 1 << 20, 4u).slope;
+    };
+    max_div = std::max(max_div, std::abs(div(0, 0)));
+    max_div_slope = std::max({max_div_slope, std::abs(div(h, 0) - div(-h, 0)) / (2 * h),
+                              std::abs(div(0, h) - div(0, -h)) / (2 * h)});
+  }
+  std::printf(
+      "edge noise: largest value %.3f, slope %.3f, curvature %.3f; divergence %.3f, "
+      "its slope %.3f\n",
+      max_value, max_slope, max_curvature, max_div, max_div_slope);
   EXPECT_LT(max_value, kEdgeNoiseMax);
   EXPECT_LT(max_slope, kEdgeNoiseMaxSlope);
   EXPECT_LT(max_curvature, kEdgeNoiseMaxCurvature);
+  EXPECT_LT(max_div, kEdgeDivergenceMax);
+  EXPECT_LT(max_div_slope, kEdgeDivergenceMaxSlope);
 }
 
 TEST(GridDetailTest, ZeroVolumeCraterHoldsNoVolume) {
@@ -350,7 +366,7 @@ TEST(GridDetailTest, RangeNearAndInterpolationErrorHold) {
         EXPECT_LE(h, r.max + 1e-6) << name << " radius " << radius;
       }
     }
-    for (double spacing : {0.5, 5.0, 60.0, 1e3, 3e4}) {
+    for (double spacing : {0.5, 5.0, 60.0, 257.0, 1e3, 3e4}) {
       double bound = l.detail->interpolation_error(spacing), worst = 0;
       for (int n = 0; n < 400; ++n) {
         glm::dvec3 a = glm::normalize(glm::dvec3(unit(rng), unit(rng), unit(rng)));
@@ -364,8 +380,10 @@ TEST(GridDetailTest, RangeNearAndInterpolationErrorHold) {
         worst = std::max(worst, off);
       }
       EXPECT_LE(worst, bound) << name << " spacing " << spacing;
-      std::printf("%s: spacing %g m, largest chord error %.3g m, bound %.3g m\n", name, spacing,
-                  worst, bound);
+      std::printf(
+          "%s: spacing %g m, largest chord error %.3g m, bound %.3g m (the grid's own %.3g m)\n",
+          name, spacing, worst, bound,
+          static_cast<const GridHeight&>(*l.detail).GridHeight::interpolation_error(spacing));
     }
   }
 }
