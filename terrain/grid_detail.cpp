@@ -154,8 +154,8 @@ double GridDetail::relief_detail(double u, double v) const {
     const double x = double(m) * (u - edge_offset_), y = double(m) * (v - edge_offset_);
     const int64_t sample = edge_offset_ > 0.0 ? m / 2 : 0;
     const uint32_t seed = spec_.seed * 131u + 2u * uint32_t(k);
-    const EdgeNoise F = edge_noise(x, y, 0, m, sample, m * width, seed);
-    const EdgeNoise G = edge_noise(x, y, 1, m, sample, m * width, seed + 1u);
+    EdgeNoise F, G;
+    edge_noise_pair(x, y, m, sample, m * width, seed, seed + 1u, F, G);
     d += (A_u * F.value + A_v * G.value) / double(m) + A * (F.slope + G.slope);
   }
   return d;

@@ -96,29 +96,49 @@ double fade_slope(double t) { return 30.0 * t * t * (t - 1.0) * (t - 1.0); }
 
 }  // namespace
 
-EdgeNoise edge_noise(double x, double y, int axis, int64_t m, int64_t sample, int64_t period,
-                     uint32_t seed) {
+void edge_noise_pair(double x, double y, int64_t m, int64_t sample, int64_t period, uint32_t seed_f,
+                     uint32_t seed_g, EdgeNoise& f, EdgeNoise& g) {
   const double fx = std::floor(x), fy = std::floor(y);
   const auto X = int64_t(fx), Y = int64_t(fy);
   const double tx = x - fx, ty = y - fy;
   const double wx[2] = {1.0 - fade(tx), fade(tx)}, wy[2] = {1.0 - fade(ty), fade(ty)};
   const double sx = fade_slope(tx), sy = fade_slope(ty);
   const double dwx[2] = {-sx, sx}, dwy[2] = {-sy, sy};
-  EdgeNoise n;
+  // m is a power of two: its remainders are masks (two's complement keeps
+  // them right below zero); columns wrap once.
+  const int64_t mask = m - 1;
+  const int64_t a0 = modulo(X, period);
+  const int64_t columns[2] = {a0, a0 + 1 == period ? 0 : a0 + 1};
+  f = {};
+  g = {};
   for (int cy = 0; cy < 2; ++cy) {
+    const int64_t b = Y + cy, bm = b & mask;
     for (int cx = 0; cx < 2; ++cx) {
-      const int64_t a = modulo(X + cx, period), b = Y + cy;
-      const int64_t am = modulo(a, m), bm = modulo(b, m);
-      if ((axis == 0 ? am : bm) == 0 || (am == sample && bm == sample)) continue;
-      const double* g = kEdgeGradients[edge_hash(a, b, seed) & 7u];
+      const int64_t a = columns[cx], am = a & mask;
+      if (am == sample && bm == sample) continue;
       const double dx = tx - cx, dy = ty - cy;
-      const double dot = g[0] * dx + g[1] * dy;
       const double w = wx[cx] * wy[cy];
-      n.value += w * dot;
-      n.slope += axis == 0 ? dwx[cx] * wy[cy] * dot + w * g[0] : wx[cx] * dwy[cy] * dot + w * g[1];
+      if (am != 0) {
+        const double* gr = kEdgeGradients[edge_hash(a, b, seed_f) & 7u];
+        const double dot = gr[0] * dx + gr[1] * dy;
+        f.value += w * dot;
+        f.slope += dwx[cx] * wy[cy] * dot + w * gr[0];
+      }
+      if (bm != 0) {
+        const double* gr = kEdgeGradients[edge_hash(a, b, seed_g) & 7u];
+        const double dot = gr[0] * dx + gr[1] * dy;
+        g.value += w * dot;
+        g.slope += wx[cx] * dwy[cy] * dot + w * gr[1];
+      }
     }
   }
-  return n;
+}
+
+EdgeNoise edge_noise(double x, double y, int axis, int64_t m, int64_t sample, int64_t period,
+                     uint32_t seed) {
+  EdgeNoise f, g;
+  edge_noise_pair(x, y, m, sample, period, seed, seed, f, g);
+  return axis == 0 ? f : g;
 }
 
 }  // namespace planet

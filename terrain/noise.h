@@ -36,6 +36,10 @@ struct EdgeNoise {
 };
 EdgeNoise edge_noise(double x, double y, int axis, int64_t m, int64_t sample, int64_t period,
                      uint32_t seed);
+// Both at once, F (axis 0, seed_f) and G (axis 1, seed_g), sharing the
+// lattice cell and its weights. `m` must be a power of two.
+void edge_noise_pair(double x, double y, int64_t m, int64_t sample, int64_t period, uint32_t seed_f,
+                     uint32_t seed_g, EdgeNoise& f, EdgeNoise& g);
 
 // Bounds on the edge noise's value, its first derivatives and its second
 // derivatives along the axes; and on the divergence F_x + G_y of two of
