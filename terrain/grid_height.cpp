@@ -299,7 +299,7 @@ void GridHeight::grid_coordinates(const glm::dvec3& d, double& u, double& v) con
   double east = lon - glm::radians(s.west_longitude_deg);
   east -= 2.0 * kPi * std::floor(east / (2.0 * kPi));
   u = east * s.width / (2.0 * kPi) - centre;
-  v = (0.5 * kPi - lat) * rows_per_radian(s) - centre;
+  v = (0.5 * kPi - lat) * planet::rows_per_radian(s) - centre;
 }
 
 double GridHeight::seabed_height(const glm::dvec3& dir_body) const {
@@ -339,14 +339,31 @@ double GridHeight::nearest_sample(const glm::dvec3& dir_body) const {
   return data_->sample(int(std::lround(u)), int(std::lround(v)));
 }
 
+double GridHeight::row_latitude(double v) const {
+  const GridSpec& s = data_->spec_;
+  double centre = s.registration == GridSpec::Registration::kPixel ? 0.5 : 0.0;
+  return 0.5 * kPi - (v + centre) / planet::rows_per_radian(s);
+}
+
+double GridHeight::rows_per_radian() const { return planet::rows_per_radian(data_->spec_); }
+
 HeightRange GridHeight::range_near(const glm::dvec3& dir_body, double radius) const {
+  HeightRange r = seabed_range_near(dir_body, radius);
+  if (sea_level_) {
+    r.min = std::max(r.min, *sea_level_);
+    r.max = std::max(r.max, *sea_level_);
+  }
+  return r;
+}
+
+HeightRange GridHeight::seabed_range_near(const glm::dvec3& dir_body, double radius) const {
   const GridSpec& s = data_->spec_;
   double u, v;
   grid_coordinates(dir_body, u, v);
   // The cap's angular radius, widened by 1 % for geodetic rows (whose
   // latitude stretches the direction's by at most (a/b)^2).
   double alpha = 1.01 * radius / radius_;
-  double rows = alpha * rows_per_radian(s);
+  double rows = alpha * planet::rows_per_radian(s);
   // The stencil reaches one sample before and two after floor(u), floor(v).
   int j0 = int(std::floor(v - rows)) - 1, j1 = int(std::ceil(v + rows)) + 2;
   int i0 = 0, i1 = s.width - 1;
@@ -355,19 +372,14 @@ HeightRange GridHeight::range_near(const glm::dvec3& dir_body, double radius) co
     j1 = std::max(j1, j0 < 0 ? -j0 : j1);
     j0 = std::min(j0, j1 > s.height - 1 ? 2 * (s.height - 1) - j1 : j0);
   } else {
-    double lat_far = std::max(std::abs(row_latitude(s, j0)), std::abs(row_latitude(s, j1)));
+    double lat_far = std::max(std::abs(planet::row_latitude(s, j0)), std::abs(planet::row_latitude(s, j1)));
     double cols = alpha / std::max(std::cos(lat_far), 1e-9) * s.width / (2.0 * kPi);
     if (2.0 * cols + 4.0 < s.width) {
       i0 = int(std::floor(u - cols)) - 1;
       i1 = int(std::ceil(u + cols)) + 2;
     }
   }
-  HeightRange r = padded(data_->sample_range(i0, i1, j0, j1));
-  if (sea_level_) {
-    r.min = std::max(r.min, *sea_level_);
-    r.max = std::max(r.max, *sea_level_);
-  }
-  return r;
+  return padded(data_->sample_range(i0, i1, j0, j1));
 }
 
 double GridHeight::interpolation_error(double spacing) const {

@@ -98,10 +98,18 @@ class GridHeight : public HeightSource {
   // reads off the grid at a place.
   double nearest_sample(const glm::dvec3& dir_body) const;
 
- private:
   // The direction's position in sample units: u east from column 0's
-  // centre, v south from row 0's.
+  // centre, v south from row 0's (samples stand at whole u and v).
   void grid_coordinates(const glm::dvec3& dir_body, double& u, double& v) const;
+  // The latitude, radians, of the row at v (geodetic for geodetic rows).
+  double row_latitude(double v) const;
+  // Rows per radian of latitude.
+  double rows_per_radian() const;
+  // The heights of the interpolated grid within `radius` of the direction,
+  // as range_near() without the sea: the floor under it.
+  HeightRange seabed_range_near(const glm::dvec3& dir_body, double radius) const;
+
+ protected:
   HeightRange padded(HeightRange samples) const;
 
   std::shared_ptr<const GridData> data_;

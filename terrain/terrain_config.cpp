@@ -1,6 +1,7 @@
 #include "terrain/terrain_config.h"
 
 #include "terrain/cage_height.h"
+#include "terrain/grid_detail.h"
 #include "terrain/grid_height.h"
 #include "terrain/height_map.h"
 #include "terrain/obj_cage.h"
@@ -133,6 +134,35 @@ std::shared_ptr<const GridData> load_grid(const GridSpec& spec) {
   return data;
 }
 
+// A grid's "detail": the relief noise and craters below its cells
+// (grid_detail.h); every field has a default.
+GridDetailSpec parse_detail(JsonObject& o) {
+  GridDetailSpec d;
+  (void)o.string_or("about", "");  // what the values are for, for people
+  d.relief_ratio = o.number_or("relief_ratio", d.relief_ratio, 0.0, 2.0);
+  d.min_amplitude_m = o.number_or("min_amplitude_m", d.min_amplitude_m, 0.0, 1e4);
+  d.max_amplitude_m = o.number_or("max_amplitude_m", d.max_amplitude_m, 0.0, 1e4);
+  if (d.max_amplitude_m < d.min_amplitude_m)
+    o.fail("max_amplitude_m", "must not be below min_amplitude_m");
+  d.rough_relief_m = o.number_or("rough_relief_m", d.rough_relief_m, 1.0, 1e5);
+  d.gain_smooth = o.number_or("gain_smooth", d.gain_smooth, 0.0, 0.9);
+  d.gain_rough = o.number_or("gain_rough", d.gain_rough, 0.0, 0.9);
+  d.sea_floor = o.number_or("sea_floor", d.sea_floor, 0.0, 1.0);
+  d.octaves = o.integer_or("octaves", d.octaves, 0, 20);
+  d.seed = uint32_t(o.integer_or("seed", int(d.seed), 0, 1 << 30));
+  if (o.has("craters")) {
+    JsonObject c = o.object("craters");
+    d.crater_octaves = c.integer("octaves", 0, 16);
+    d.crater_depth_ratio = c.number_or("depth_ratio", d.crater_depth_ratio, 0.0, 2.0);
+    d.crater_density = c.number_or("density", d.crater_density, 0.0, 1.0);
+    d.crater_sfd_exponent = c.number_or("sfd_exponent", d.crater_sfd_exponent, 1.0, 4.0);
+    d.crater_seed = uint32_t(c.integer_or("seed", int(d.crater_seed), 0, 1 << 30));
+    c.finish();
+  }
+  o.finish();
+  return d;
+}
+
 std::shared_ptr<const HeightSource> parse_grid(JsonObject& o, const Body& body,
                                                std::optional<double>& sea_level,
                                                double mean_radius) {
@@ -170,8 +200,17 @@ std::shared_ptr<const HeightSource> parse_grid(JsonObject& o, const Body& body,
   JsonObject datum = o.object("datum");
   check_datum(datum, body, spec.file.string());
   if (o.has("sea_level_m")) sea_level = o.number("sea_level_m", -1e5, 1e5);
+  std::optional<GridDetailSpec> detail;
+  if (o.has("detail")) {
+    JsonObject d = o.object("detail");
+    detail = parse_detail(d);
+  }
   o.finish();
   double b = body.shape.polar_radius(), a = body.shape.equatorial_radius;
+  if (detail) {
+    return std::make_shared<GridDetail>(load_grid(spec), mean_radius, (a * a) / (b * b),
+                                        sea_level, *detail);
+  }
   return std::make_shared<GridHeight>(load_grid(spec), mean_radius, (a * a) / (b * b), sea_level);
 }
 

@@ -134,8 +134,11 @@ BENCHMARK_CAPTURE(BM_TerrainLodSelectionOn, moon, "moon", -43.31, -11.36)
     ->Arg(400000)
     ->Unit(benchmark::kMicrosecond);
 
-void BM_TerrainTileBuild(benchmark::State& state, const char* name) {
+// `detail` false: the body's grid without its detail (grid_detail.h), its
+// interpolation alone, for the detail's cost in the same run.
+void BM_TerrainTileBuild(benchmark::State& state, const char* name, bool detail) {
   Body body = load_body(data_dir() / "planets" / (std::string(name) + ".json"));
+  if (!detail) body.terrain["height"].erase("detail");
   TerrainSurface surface(body.shape, parse_terrain(body));
   uint32_t i = 0;
   for (auto _ : state) {
@@ -152,11 +155,17 @@ void BM_TerrainTileBuild(benchmark::State& state, const char* name) {
   state.counters["tiles_per_s"] =
       benchmark::Counter(double(state.iterations()), benchmark::Counter::kIsRate);
 }
-BENCHMARK_CAPTURE(BM_TerrainTileBuild, earth, "earth")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_TerrainTileBuild, mars, "mars")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_TerrainTileBuild, moon, "moon")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_TerrainTileBuild, asteroid, "asteroid")->Unit(benchmark::kMillisecond);
-BENCHMARK_CAPTURE(BM_TerrainTileBuild, eros, "eros")->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_TerrainTileBuild, earth, "earth", true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_TerrainTileBuild, earth_grid_only, "earth", false)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_TerrainTileBuild, mars, "mars", true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_TerrainTileBuild, mars_grid_only, "mars", false)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_TerrainTileBuild, moon, "moon", true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_TerrainTileBuild, moon_grid_only, "moon", false)
+    ->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_TerrainTileBuild, asteroid, "asteroid", true)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(BM_TerrainTileBuild, eros, "eros", true)->Unit(benchmark::kMillisecond);
 
 // The part of a tile build that is the shadows' own: sampling the grid's
 // border and marching its horizons (the parent's far horizon kept, as a
