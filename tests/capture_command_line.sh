@@ -25,10 +25,10 @@ expect "--height: 20000 is not an image side (1 to 16384 pixels)" "${cap[@]}" --
 expect "--scale 0.001: makes $flight's 64x32 image 0x0 pixels" "${cap[@]}" --scale 0.001
 expect "--scale and --width/--height both given" "${cap[@]}" --scale 0.5 --width 10
 expect "--technique: unknown atmosphere technique 'nope'" "${cap[@]}" --technique nope
-sed 's/"height_m": 3150.1,/"height_m": 3150.1, "height_above_ground_m": 2,/' "$flight" > "$work/both.json"
+sed 's/"height_m": 3112.7,/"height_m": 3112.7, "height_above_ground_m": 2,/' "$flight" > "$work/both.json"
 expect "both.json: keyframes.0.: \"height_m\" (above the ellipsoid) and \"height_above_ground_m\" (above the ground) both given" \
   "$planet" capture --flight "$work/both.json" --out "$work/bad" --quiet
-sed 's/"height_m": 3150.1,/"height_above_ground_m": -5,/' "$flight" > "$work/under.json"
+sed 's/"height_m": 3112.7,/"height_above_ground_m": -5,/' "$flight" > "$work/under.json"
 expect "under.json: keyframes.0.: the camera is 5.0 m below the ground (height_above_ground_m -5.0" \
   "$planet" capture --flight "$work/under.json" --out "$work/bad" --quiet
 [ -e "$work/bad" ] && fail "a refused capture left its folder"
@@ -47,7 +47,7 @@ for f in "$work/small/frame_00000.json" "$work/small/capture.json"; do
     fail "$(basename "$f") does not say what the command line overrode"
 done
 grep -q "^captured 1 frame in " "$work/small.txt" || fail "not '1 frame': $(cat "$work/small.txt")"
-grep -q "^planet: Earth, 16x8, 3 frames at 0.1 fps, raymarch sky on .*; frame 0 at 3150.1 m above the ellipsoid, 2.0 m above the ground$" \
+grep -q "^planet: Earth, 16x8, 3 frames at 0.1 fps, raymarch sky on .*; frame 0 at 3112.7 m above the ellipsoid, 2.0 m above the ground$" \
   "$work/small.err" || fail "first line: $(head -1 "$work/small.err")"
 echo "ok: $(head -1 "$work/small.err")"
 
@@ -59,10 +59,10 @@ echo "ok: $(head -1 "$work/small.err")"
 
 # Heights above the ground: the same place given the other way round.
 sed -e 's/"width": *64/"width": 16/' -e 's/"height": *32/"height": 8/' \
-    -e 's/"height_m": 3150.1,/"height_above_ground_m": 2.0,/' "$flight" > "$work/ground.json"
+    -e 's/"height_m": 3112.7,/"height_above_ground_m": 2.0,/' "$flight" > "$work/ground.json"
 "$planet" capture --flight "$work/ground.json" --out "$work/ground" --frames 0:1 \
   > /dev/null 2> "$work/ground.err" || fail "capture with height_above_ground_m: $(cat "$work/ground.err")"
-grep -q "; frame 0 at 3150.1 m above the ellipsoid, 2.0 m above the ground$" "$work/ground.err" ||
+grep -q "; frame 0 at 3112.7 m above the ellipsoid, 2.0 m above the ground$" "$work/ground.err" ||
   fail "height_above_ground_m 2: $(head -1 "$work/ground.err")"
 
 # The Moon has no air: no sky technique named.

@@ -23,7 +23,7 @@ want 'DateTime: "2026:06:21 09:30:10"'
 want "utcOffset: 0"
 want "latitude: 46\.2"
 want "longitude: 9\.2"
-want "altitude: 201575"
+want "altitude: 201556"
 want "worldToCamera: "
 want "worldToNDC: "
 want 'planet:body: "Earth"'
