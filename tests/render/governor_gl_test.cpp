@@ -211,7 +211,7 @@ TEST_F(GovernorGLTest, EverySwitchOfTheAscentFadesWithoutAPop) {
   // even one made at once hides (1.003 with the lab's sixth table): so a
   // switch from raymarch (single scattering alone) to hillaire at once,
   // near the ground, spliced from the two drawn alone.
-  const int at = 50;  // 5 s in, a few km up
+  const int at = 100;  // 10 s in, some 10 km up
   auto before = capture("splice-before", named("raymarch:cheap", script), at - 1, at + 2);
   auto after = capture("splice-after", named("hillaire", script), at - 1, at + 2);
   const std::filesystem::path spliced = root_ / "spliced";

@@ -43,7 +43,10 @@ struct Scene {
 // alps_nightfall's place and view, at `time` on 15 January 2026.
 Scene alps(const std::string& time) {
   Scene s;
-  s.body = load_body(data_dir() / "planets" / "earth.json");
+  // The procedural Earth, whose ground lies below this view's stars: over
+  // ETOPO5 and its detail the camera stands 89 m over the Jungfraujoch and
+  // the ridges around hide one of the three lowest stars.
+  s.body = load_body(project_root() / "tests/data/planets/earth_procedural.json");
   Geodesy geodesy(s.body.shape);
   s.camera = geodesy.camera_at({glm::radians(46.55), glm::radians(7.98), 3200.0},
                                glm::radians(115.0), glm::radians(12.0), glm::radians(70.0));
