@@ -8,9 +8,22 @@ for tool in Xvfb xdotool; do
     exit 77
   fi
 done
-display=":$(( 90 + RANDOM % 400 ))"
-Xvfb "$display" -screen 0 800x600x24 -nolisten tcp >/dev/null 2>&1 &
-xvfb=$!
-export DISPLAY="$display"
-# Until the server answers.
-for _ in $(seq 1 50); do xdotool getmouselocation >/dev/null 2>&1 && break; sleep 0.1; done
+# Until the server answers: up to 30 s (with the long tier's other tests
+# alongside it took past the 5 s this once waited, and the window then
+# found no display), on another number if the server ends (its number in
+# use by another test's server).
+answered=0
+for _ in 1 2 3; do
+  display=":$(( 90 + RANDOM % 400 ))"
+  Xvfb "$display" -screen 0 800x600x24 -nolisten tcp >/dev/null 2>&1 &
+  xvfb=$!
+  export DISPLAY="$display"
+  for _ in $(seq 1 300); do
+    xdotool getmouselocation >/dev/null 2>&1 && { answered=1; break; }
+    kill -0 "$xvfb" 2>/dev/null || break
+    sleep 0.1
+  done
+  [ "$answered" = 1 ] && break
+  kill "$xvfb" 2>/dev/null
+done
+[ "$answered" = 1 ] || { echo "FAIL: no virtual display answered (Xvfb on three numbers, 30 s each)"; exit 1; }
