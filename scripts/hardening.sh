@@ -23,7 +23,7 @@
 # sanitizer report fails the run; tests/sanitizers/*.supp hold the
 # suppressions, each with its reason.
 #   scripts/hardening.sh [STEP [K/N]]...   (default: asan fuzz tsan)
-# CI (.ci/run) runs asan-quick, asan-long (the commit's share), fuzz, tsan-ci.
+# CI (.ci/run) runs asan-quick fuzz tsan-ci; asan-long runs by hand.
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"
