@@ -29,7 +29,7 @@ dirs=("$root"/data/elevation/*/)
 check "${dirs[@]%/}"
 echo "ok: ${#dirs[@]} grids match their SOURCE.md"
 
-work="$(mktemp -d /tmp/planet-elevation.XXXXXX)"
+work="$(mktemp -d "${TMPDIR:-/tmp}/planet-elevation.XXXXXX")"
 trap 'rm -rf "$work"' EXIT
 mkdir "$work/moon"
 cp "$root/data/elevation/moon/SOURCE.md" "$root/data/elevation/moon/LDEM_4.LBL" "$work/moon/"

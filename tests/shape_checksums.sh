@@ -38,7 +38,7 @@ grep -q "^sha256 of \`EROS007790.TAB\` (not shipped): $tab\$" "$eros/SOURCE.md" 
   { echo "eros007790.obj does not give the PDS table back (sha256 $tab)"; exit 1; }
 echo "ok: eros007790.obj gives EROS007790.TAB back byte for byte"
 
-work="$(mktemp -d /tmp/planet-shapes.XXXXXX)"
+work="$(mktemp -d "${TMPDIR:-/tmp}/planet-shapes.XXXXXX")"
 trap 'rm -rf "$work"' EXIT
 mkdir "$work/eros"
 cp "$eros/SOURCE.md" "$eros/EROS007790.LBL" "$work/eros/"
