@@ -79,6 +79,8 @@ FlySession::FlySession(const FlyArgs& args, GLFWwindow* window, FlyInput& input,
   options.terrain_wait_s = 0.0;
   options.stars = true;
   options.auto_exposure = args.auto_exposure;
+  // Wall times cost the frame what overlap would have given it; only asked for.
+  options.synchronous_timing = args.pass_table;
   ldr_framebuffer_ = make_framebuffer(renderer_->ldr_texture(), 0);
   std::optional<FlightScript> flight;
   if (!args.flight_file.empty()) {
