@@ -173,6 +173,11 @@ void run(const CaptureArgs& args) {
     std::exit(130);  // as a shell reports a program stopped by SIGINT
   }
   out.keep();
+  // Asked for, the table is printed even when quiet.
+  if (args.pass_table) {
+    std::printf("each pass, its mean wall and GPU time over the frames it ran:\n%s",
+                result.passes.table().c_str());
+  }
   if (args.quiet) return;
   std::printf("captured %s in %.1f s into %s (first %s, last %s)\n",
               count_of(result.frames, "frame").c_str(), result.wall_seconds,
@@ -186,10 +191,6 @@ void run(const CaptureArgs& args) {
                 script.frame_count(), result.folder.wall_seconds);
   }
   print_removed(result.removed, options.out_dir.string());
-  if (args.pass_table) {
-    std::printf("each pass, its mean wall and GPU time over the frames it ran:\n%s",
-                result.passes.table().c_str());
-  }
 }
 
 }  // namespace

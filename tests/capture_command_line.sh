@@ -60,7 +60,8 @@ echo "ok: $(head -1 "$work/small.err")"
 grep -qE "^  pass +wall ms +GPU ms +ran +reused +skipped$" "$work/wide.txt" &&
   grep -qE "^  surface +[0-9.]+ +[0-9.]+ +2 +0 +0$" "$work/wide.txt" &&
   grep -qE "^  fade:frame +0.00 +0.00 +0 +0 +2$" "$work/wide.txt" &&
-  tail -1 "$work/wide.txt" | grep -qE "^  frame +[0-9.]+ +[0-9.]+ +2$" ||
+  grep -qE "^  frame +[0-9.]+ +[0-9.]+ +2$" "$work/wide.txt" &&
+  grep -q "^captured 2 frames in " "$work/wide.txt" ||
   fail "--pass-table: $(cat "$work/wide.txt")"
 
 # Heights above the ground: the same place given the other way round.
