@@ -72,9 +72,9 @@ TEST(PassTallyTest, TableMarksWallTimesNotKept) {
   PassTally tally;
   tally.add({ran("sky", 10.0)});
   EXPECT_EQ(tally.table(),
-            "  pass     wall ms      GPU ms    ran  reused  skipped\n"
-            "  sky            -       10.00      1       0        0\n"
-            "  frame          -       10.00      1\n");
+            "  pass      wall ms      GPU ms    ran  reused  skipped\n"
+            "  sky             -       10.00      1       0        0\n"
+            "  frame           -       10.00      1\n");
 }
 
 }  // namespace
