@@ -170,7 +170,7 @@ void add_fly_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--antialiasing", args->antialiasing,
                   "Samples a pixel for the edges of the ground against the sky: 1 (none), 2, 4, "
-                  "8, 16; 0: as a capture draws them (4), but on llvmpipe (where 4 cost 4.5 times "
+                  "8, 16; 0: as a capture draws them (4), but on llvmpipe (where 4 cost twice "
                   "the surfaces' pass) 1 with the image's edges smoothed (FXAA)")
       ->capture_default_str();
   cmd->add_flag(
