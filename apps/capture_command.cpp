@@ -33,6 +33,7 @@ struct CaptureArgs {
   double error_budget = std::nan("");  // NaN: none given
   std::string error_model;
   bool glare = false;
+  bool pass_table = false;
   // In place of the script's own (render/capture_overrides.h).
   std::optional<std::string> technique;
   std::optional<int> width, height;
@@ -125,6 +126,7 @@ void run(const CaptureArgs& args) {
   options.progress = !args.quiet;
   set_progress_shown(!args.quiet);
   options.pixel_budget = args.pixel_budget;
+  options.pass_table = args.pass_table;
   options.terrain_cache_bytes = size_t(args.terrain_cache_mib * 1048576.0);
   // Every input, and the output folder, before GL starts.
   if (!std::isnan(args.error_budget)) {
@@ -171,6 +173,11 @@ void run(const CaptureArgs& args) {
     std::exit(130);  // as a shell reports a program stopped by SIGINT
   }
   out.keep();
+  // Asked for, the table is printed even when quiet.
+  if (args.pass_table) {
+    std::printf("each pass, its mean wall and GPU time over the frames it ran:\n%s",
+                result.passes.table().c_str());
+  }
   if (args.quiet) return;
   std::printf("captured %s in %.1f s into %s (first %s, last %s)\n",
               count_of(result.frames, "frame").c_str(), result.wall_seconds,
@@ -205,6 +212,9 @@ void add_capture_command(CLI::App& app) {
   cmd->add_flag("--glare", args->glare,
                 "The eye's glare around the sun, as fly draws it (the flight's \"image\": "
                 "{\"glare\": true})");
+  cmd->add_flag("--pass-table", args->pass_table,
+                "At the end, each pass's mean wall and GPU time and how often it ran, was "
+                "reused or skipped (each pass then waits for the GL)");
   cmd->add_option("--pixel-budget", args->pixel_budget,
                   "Terrain detail: largest projected geometric error in pixels")
       ->check(within(0.1, 100.0));

@@ -25,6 +25,12 @@ class PassTally {
   // reused 10, skipped 2". The mean is over the frames the pass ran: its wall time
   // where the timer was synchronous, else its timer queries' GPU time.
   std::string summary() const;
+  // The same passes as a table under a header, the costliest first (by
+  // wall time where the timer was synchronous): each pass's mean wall and
+  // GPU time over the frames it ran ("-" for a wall time not kept), and
+  // how often it ran, was reused and skipped; then the frame's mean, its
+  // passes' summed over all frames: what `--pass-table` prints.
+  std::string table() const;
 
  private:
   int frames_ = 0;

@@ -269,6 +269,7 @@ void set_up_renderer(FrameRenderer& renderer, const FlightScript& script,
   // A capture draws every tile the view needs at its level: frames must
   // not depend on how fast tiles happened to be built.
   frame_options.terrain_wait_s = kTerrainWaitSeconds;
+  frame_options.synchronous_timing = options.pass_table;
   renderer.set_options(frame_options);
 }
 
@@ -416,6 +417,7 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
     }
     renderer.set_star_orientation(body_from_icrf(script.body, path.utc_at(t)));
     FrameStats stats = renderer.render(camera, sun, exposure);
+    result.passes.add(stats.passes);
     exposure = renderer.last_exposure();
     std::string stem = frame_stem(frame);
     nlohmann::json side = sidecar(script, path, geodesy, frame, t, camera, exposure, sun, stats,

@@ -6,6 +6,7 @@
 // removed first, so a capture that stops half-way never looks finished.
 #include "atmosphere/gpu/registry.h"
 #include "core/share.h"
+#include "gl/pass_tally.h"
 #include "governor/governor.h"
 #include "render/capture_folder.h"
 #include "render/capture_overrides.h"
@@ -38,6 +39,9 @@ struct CaptureOptions {
   // What the command line put in place of the script's own, already in the
   // script the capture is given: recorded in every sidecar and capture.json.
   CaptureOverrides overrides;
+  // --pass-table: each pass's wall time kept too (a synchronous timer), for
+  // CaptureResult::passes.
+  bool pass_table = false;
 };
 
 // The budget a capture of `script` runs the governor with: the command
@@ -53,6 +57,8 @@ struct CaptureResult {
   // runs left (capture.json's), and an earlier, longer capture's removed.
   FolderFrames folder;
   FramesBeyond removed;
+  // This run's frames, pass by pass.
+  PassTally passes;
 };
 
 // Ctrl-C during a capture: the frame in progress is finished and written,

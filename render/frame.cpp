@@ -328,6 +328,10 @@ std::vector<Pass> FrameRenderer::image_passes(const Frame& f) {
 
 void FrameRenderer::draw_surfaces(const Frame& f, const AtmosphereTechnique* technique) {
   const float black[4] = {0, 0, 0, 0};
+  // With anti-aliasing, the coverage's samples first, then the lit
+  // surfaces once a pixel (surface_antialiasing.h), the same tiles both.
+  const GLuint coverage = multisampled_ ? multisampled_->coverage_framebuffer() : 0;
+  if (coverage != 0) begin_reversed_z(coverage, width_, height_, black);
   const GLuint target = multisampled_ ? multisampled_->framebuffer() : surface_draw_fbo_.id();
   begin_reversed_z(target, width_, height_, black);
   glClearNamedFramebufferfv(target, GL_COLOR, 1, black);
@@ -344,7 +348,7 @@ void FrameRenderer::draw_surfaces(const Frame& f, const AtmosphereTechnique* tec
   lighting.shadows = options_.terrain_shadows;
   // Bound even for an airless body (then all zero): the block is declared.
   glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, atmosphere_block_.id());
-  terrain_stats_ = terrain_->draw(f.camera, width_, height_, lighting);
+  terrain_stats_ = terrain_->draw(f.camera, width_, height_, lighting, coverage);
   glDisable(GL_DEPTH_TEST);
 }
 

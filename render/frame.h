@@ -43,10 +43,11 @@ struct FrameStats {
 struct FrameOptions {
   // Anti-aliasing of the surfaces' edges: samples per pixel (1: none, one
   // ray through each pixel's centre as the path tracer traces it). The
-  // surfaces are drawn multisampled and resolved to one surface per pixel
-  // with its coverage; after the atmosphere, a partly covered pixel takes
-  // the rest from the open sky beside it. SystemError for a count the GL
-  // cannot give.
+  // surfaces are lit once a pixel, their coverage and depth counted per
+  // sample, and resolved to one surface per pixel with its coverage; after
+  // the atmosphere, a partly covered pixel takes the rest from the open sky
+  // beside it. A pixel a surface covers whole is as at one sample.
+  // SystemError for a count the GL cannot give.
   int antialiasing = 1;
   // The tone-mapped image's edges smoothed (FXAA, render/shaders/
   // smooth_edges.frag): for a window on a GL where multisampling costs too
@@ -92,8 +93,9 @@ struct FrameOptions {
 //   atmosphere_tables  the technique's model-wide tables (they time their own passes)
 //   fade:frame         while a switch of technique fades, the previous technique's
 //                      frame, as below with "fade:" before each name, kept in a texture
-//   surface            the opaque surfaces, lit with the tables' sky light
-//   resolve            with anti-aliasing, the surfaces' samples to one per pixel
+//   surface            the opaque surfaces, lit with the tables' sky light once a pixel
+//                      (with anti-aliasing, their coverage drawn per sample first)
+//   resolve            with anti-aliasing, the lit surfaces and their coverage to one per pixel
 //   terrain_shadow     the terrain's shadow in the air (CPU), for a technique that draws it
 //   atmosphere         sky, sun and aerial perspective (the technique times its own passes)
 //   antialias          with anti-aliasing, the surfaces' edges against the sky
@@ -192,8 +194,8 @@ class FrameRenderer {
   // writes ground_below_; surface_fbo_: the passes after it.
   Framebuffer surface_fbo_, surface_draw_fbo_, hdr_fbo_, ldr_fbo_;
   Program tonemap_program_;
-  // With anti-aliasing, the multisampled surfaces, resolved into surface_
-  // and depth_ (made by set_options).
+  // With anti-aliasing, the lit surfaces and their multisampled coverage,
+  // resolved into surface_ and depth_ (made by set_options).
   std::unique_ptr<SurfaceAntialiasing> multisampled_;
   Buffer atmosphere_block_;
   FullscreenPass tonemap_pass_;

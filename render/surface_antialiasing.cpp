@@ -5,6 +5,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace planet {
 
 void SurfaceAntialiasing::check_samples(int samples) {
@@ -19,16 +21,24 @@ void SurfaceAntialiasing::check_samples(int samples) {
 SurfaceAntialiasing::SurfaceAntialiasing(int samples, int width, int height)
     : samples_(samples), width_(width), height_(height) {
   check_samples(samples);
-  // Half floats: the samples are resolved straight away, and a surface's
-  // radiance (at most a few units) keeps 11 bits, far below what the tone
-  // map shows. At 1280x720 on llvmpipe (`planet bench
-  // --benchmark_filter=TerrainFrame`) the surfaces from 400 km took 90 ms
-  // against 125 with RGBA32F (from 2 m, 400 against 391).
-  surface_ = make_texture_2d_multisample(GL_RGBA16F, samples, width, height);
+  // As the frame's own surfaces: a frame's pixels that a surface covers
+  // whole are the same as at one sample a pixel.
+  lit_ = make_texture_2d(GL_RGBA32F, width, height);
+  lit_ground_below_ = make_texture_2d(GL_R32F, width, height);
+  lit_depth_ = make_texture_2d(GL_DEPTH_COMPONENT32F, width, height);
+  lit_fbo_ = make_framebuffer({lit_.id(), lit_ground_below_.id()}, lit_depth_.id());
   // Half floats keep a depth of 2.5 km below the datum to 2 m.
   ground_below_ = make_texture_2d_multisample(GL_R16F, samples, width, height);
   depth_ = make_texture_2d_multisample(GL_DEPTH_COMPONENT32F, samples, width, height);
-  fbo_ = make_framebuffer({surface_.id(), ground_below_.id()}, depth_.id());
+  coverage_fbo_ = make_framebuffer({ground_below_.id()}, depth_.id());
+  // The GL's own sample positions, for the resolve (at most 16: check_samples's
+  // callers ask for no more).
+  sample_positions_.assign(size_t(2 * std::min(samples, 16)), 0.5f);
+  glBindFramebuffer(GL_FRAMEBUFFER, coverage_fbo_.id());
+  for (int s = 0; s < std::min(samples, 16); ++s) {
+    glGetMultisamplefv(GL_SAMPLE_POSITION, GLuint(s), &sample_positions_[size_t(2 * s)]);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
   resolve_program_ =
       Program::graphics("gl/shaders/fullscreen.vert", "render/shaders/surface_resolve.frag");
   edges_program_ =
@@ -40,10 +50,12 @@ void SurfaceAntialiasing::resolve(const FullscreenPass& pass, GLuint target) con
   pass.begin(target, width_, height_, resolve_program_);
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_ALWAYS);
-  glBindTextureUnit(0, surface_.id());
+  glBindTextureUnit(0, lit_.id());
   glBindTextureUnit(1, depth_.id());
   glBindTextureUnit(2, ground_below_.id());
+  glBindTextureUnit(3, lit_depth_.id());
   glUniform1i(resolve_program_.uniform("u_samples"), samples_);
+  glUniform2fv(resolve_program_.uniform("u_sample_positions"), samples_, sample_positions_.data());
   pass.draw();
   glDisable(GL_DEPTH_TEST);
 }

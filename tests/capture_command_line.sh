@@ -5,7 +5,7 @@
 # any frame. The first line says where the capture starts, above the
 # ellipsoid and above the ground, whichever the script gave ("height_m" or
 # "height_above_ground_m"), names no sky for an airless body, and one frame
-# is "1 frame". `--refusals-only` as a fifth argument: the bad values
+# is "1 frame"; --pass-table prints the table of passes. `--refusals-only` as a fifth argument: the bad values
 # alone (no GL, a second).
 set -uo pipefail
 planet="$1"; flight="$2"; moon="$3"; work="$4"; only="${5:-}"
@@ -51,11 +51,18 @@ grep -q "^planet: Earth, 16x8, 3 frames at 0.1 fps, raymarch sky on .*; frame 0 
   "$work/small.err" || fail "first line: $(head -1 "$work/small.err")"
 echo "ok: $(head -1 "$work/small.err")"
 
-# One side alone keeps the script's aspect ratio.
-"$planet" capture --flight "$flight" --out "$work/wide" --frames 0:1 --width 24 --quiet ||
-  fail "capture --width"
+# One side alone keeps the script's aspect ratio; --pass-table ends with
+# each pass's wall and GPU time and counts, the frame's last.
+"$planet" capture --flight "$flight" --out "$work/wide" --frames 0:2 --width 24 --pass-table \
+  > "$work/wide.txt" 2> /dev/null || fail "capture --width --pass-table"
 [ "$(png_size "$work/wide/frame_00000.png")" = 24x12 ] ||
   fail "--width 24 of 64x32 gave $(png_size "$work/wide/frame_00000.png")"
+grep -qE "^  pass +wall ms +GPU ms +ran +reused +skipped$" "$work/wide.txt" &&
+  grep -qE "^  surface +[0-9.]+ +[0-9.]+ +2 +0 +0$" "$work/wide.txt" &&
+  grep -qE "^  fade:frame +0.00 +0.00 +0 +0 +2$" "$work/wide.txt" &&
+  grep -qE "^  frame +[0-9.]+ +[0-9.]+ +2$" "$work/wide.txt" &&
+  grep -q "^captured 2 frames in " "$work/wide.txt" ||
+  fail "--pass-table: $(cat "$work/wide.txt")"
 
 # Heights above the ground: the same place given the other way round.
 sed -e 's/"width": *64/"width": 16/' -e 's/"height": *32/"height": 8/' \

@@ -4,6 +4,7 @@
 #include "atmosphere/gpu/registry.h"
 #include "core/data_paths.h"
 #include "gl/context.h"
+#include "gl/pass_tally.h"
 #include "render/frame.h"
 #include "sim/geodesy.h"
 #include "sim/star_catalogue.h"
@@ -19,6 +20,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include <chrono>
+#include <cstdio>
 #include <string>
 #include <unordered_map>
 #include <vector>
@@ -44,7 +46,8 @@ Camera camera_above(const Body& body, const TerrainSurface& surface, double abov
 // Times a benchmark's frames: each iteration renders one (`render`
 // returns its FrameStats) and takes the sum of its passes' wall time; then
 // each counter of `counted` is the mean wall time a frame of the passes
-// named for it.
+// named for it. The frames' table of passes (PassTally::table, as `fly
+// --pass-table` prints it) comes before the benchmark's own line.
 struct PassCounter {
   const char* counter;
   std::vector<std::string> passes;
@@ -61,8 +64,10 @@ void set_terrain_wait(FrameRenderer& renderer, double seconds) {
 template <class Render>
 void time_frames(benchmark::State& state, Render render, const std::vector<PassCounter>& counted) {
   std::unordered_map<std::string, double> totals;
+  PassTally tally;
   for (auto _ : state) {
     FrameStats stats = render();
+    tally.add(stats.passes);
     double frame_ms = 0;
     for (const auto& p : stats.passes) {
       frame_ms += p.wall_ms;
@@ -75,6 +80,9 @@ void time_frames(benchmark::State& state, Render render, const std::vector<PassC
     for (const std::string& pass : c.passes) sum += totals[pass];
     state.counters[c.counter] = sum / double(state.iterations());
   }
+  std::printf("the next benchmark's frames, each pass's mean wall and GPU time:\n%s",
+              tally.table().c_str());
+  std::fflush(stdout);
 }
 
 // The selection over a body's ground, `above` metres over it at a place.

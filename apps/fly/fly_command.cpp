@@ -17,10 +17,14 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <functional>
 #include <memory>
+#include <numeric>
+#include <vector>
 
 namespace planet::apps {
 
@@ -83,23 +87,39 @@ void run(const FlyArgs& args) {
   auto begun = std::chrono::steady_clock::now(), last = begun;
   int frames = 0;
   std::pair<int, int> hud_size{0, 0};
+  std::vector<double> frame_seconds;
   for (;;) {
     auto now = std::chrono::steady_clock::now();
     double dt = std::chrono::duration<double>(now - last).count();
     last = now;
+    if (frames > 0) frame_seconds.push_back(dt);  // the frame before this call's
     if (!session.frame(dt)) break;
     ++frames;
     hud_size = std::max(hud_size, hud.size());
   }
   double seconds = std::chrono::duration<double>(last - begun).count();
+  // The slowest 1 % of frames (at least one), their mean: the stutter a
+  // mean frame rate hides.
+  std::sort(frame_seconds.begin(), frame_seconds.end(), std::greater<>());
+  const size_t slowest = std::max<size_t>(1, frame_seconds.size() / 100);
+  const size_t counted = std::min(slowest, frame_seconds.size());
+  const double slowest_s =
+      std::accumulate(frame_seconds.begin(), frame_seconds.begin() + long(counted), 0.0) /
+      double(slowest);
   std::printf(
-      "flew %d frames in %.1f s (%.1f frames/s); the HUD took at most %d x %d px of the "
-      "%d x %d window\n",
-      frames, seconds, frames / std::max(seconds, 1e-9), hud_size.first, hud_size.second,
-      args.width, args.height);
-  std::printf("each pass, its mean GPU time over the frames it ran (timer queries: on "
-              "llvmpipe they miss what runs in the calling thread):\n%s",
-              session.passes().summary().c_str());
+      "flew %d frames in %.1f s (%.1f frames/s, the slowest 1 %% of frames %.0f ms each); the "
+      "HUD took at most %d x %d px of the %d x %d window\n",
+      frames, seconds, frames / std::max(seconds, 1e-9), 1e3 * slowest_s, hud_size.first,
+      hud_size.second, args.width, args.height);
+  if (args.pass_table) {
+    std::printf("each pass, its mean wall and GPU time over the frames it ran:\n%s",
+                session.passes().table().c_str());
+  } else {
+    std::printf(
+        "each pass, its mean GPU time over the frames it ran (timer queries: on "
+        "llvmpipe they miss what runs in the calling thread):\n%s",
+        session.passes().summary().c_str());
+  }
 }
 
 }  // namespace
@@ -150,9 +170,13 @@ void add_fly_command(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--antialiasing", args->antialiasing,
                   "Samples a pixel for the edges of the ground against the sky: 1 (none), 2, 4, "
-                  "8, 16; 0: as a capture draws them (4), but on llvmpipe (where 4 cost 4.5 times "
+                  "8, 16; 0: as a capture draws them (4), but on llvmpipe (where 4 cost twice "
                   "the surfaces' pass) 1 with the image's edges smoothed (FXAA)")
       ->capture_default_str();
+  cmd->add_flag(
+      "--pass-table", args->pass_table,
+      "At the end, each pass's mean wall and GPU time and how often it ran, was "
+      "reused or skipped (each pass then waits for the GL: the frame rate drops a little)");
   cmd->add_option("--out", args->out_dir, "Folder for screenshots and recorded flights")
       ->capture_default_str();
   cmd->callback([args] { run(*args); });

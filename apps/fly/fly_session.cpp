@@ -62,9 +62,10 @@ FlySession::FlySession(const FlyArgs& args, GLFWwindow* window, FlyInput& input,
   renderer_ = std::make_unique<FrameRenderer>(std::max(1, int(args.width * args.render_scale)),
                                               std::max(1, int(args.height * args.render_scale)));
   // The edges as a capture draws them (a flight's default); but llvmpipe
-  // shades each sample, and the surfaces' pass took 4.5 times as long (1070
-  // against 237 ms a frame at 480 x 270): there the edges are smoothed in
-  // the image instead, for a few ms.
+  // shades each sample, and even with the light once a pixel the coverage's
+  // samples doubled the surfaces' pass (121 against 62 ms a frame at 480 x
+  // 270, the ascent): there the edges are smoothed in the image instead,
+  // for a few ms.
   const bool software =
       std::string(reinterpret_cast<const char*>(glGetString(GL_RENDERER))).find("llvmpipe") !=
       std::string::npos;
@@ -79,6 +80,8 @@ FlySession::FlySession(const FlyArgs& args, GLFWwindow* window, FlyInput& input,
   options.terrain_wait_s = 0.0;
   options.stars = true;
   options.auto_exposure = args.auto_exposure;
+  // Wall times cost the frame what overlap would have given it; only asked for.
+  options.synchronous_timing = args.pass_table;
   ldr_framebuffer_ = make_framebuffer(renderer_->ldr_texture(), 0);
   std::optional<FlightScript> flight;
   if (!args.flight_file.empty()) {

@@ -42,6 +42,9 @@ struct FlyArgs {
   int antialiasing = 0;
   double exposure = 8.0, vertical_fov_deg = 60.0;
   bool auto_exposure = false;  // each frame's own, from its mean luminance
+  // --pass-table: each pass's wall time kept (a synchronous timer) and the
+  // table of passes printed at the end (PassTally::table).
+  bool pass_table = false;
   bool exposure_given = false;  // --exposure on the command line: kept at night too
   std::string out_dir = ".";
   std::string flight_file;  // fly a script instead of the start place

@@ -1,7 +1,7 @@
 // Lottes 2009, FXAA: the tone-mapped image's edges blended along their
 // direction, found from the luma of the four diagonal neighbours. For a
 // window whose surfaces cannot take multisampling (llvmpipe shades each of
-// its samples: the surfaces' pass costs 4.5 times as much); a capture
+// its samples: the coverage's alone doubles the surfaces' pass); a capture
 // multisamples instead (frame.h's FrameOptions::antialiasing).
 in vec2 v_ndc;
 layout(location = 0) out vec4 o_color;

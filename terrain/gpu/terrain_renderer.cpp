@@ -115,8 +115,82 @@ void TerrainRenderer::wait_until_complete(const Camera& camera, int width, int h
   }
 }
 
-TerrainStats TerrainRenderer::draw(const Camera& camera, int width, int height,
+void TerrainRenderer::set_uniforms(const Program& program, const Camera& camera,
+                                   const LodView& view, int width, int height,
                                    const TerrainLighting& lighting) {
+  program.use();
+  glm::mat4 clip =
+      clip_from_view_reversed_z(camera.vertical_fov, double(width) / height, camera.near);
+  glUniformMatrix3fv(program.uniform("u_view_from_body"), 1, GL_FALSE,
+                     glm::value_ptr(glm::mat3(view.view_from_body)));
+  glUniformMatrix4fv(program.uniform("u_clip_from_view"), 1, GL_FALSE, glm::value_ptr(clip));
+  glUniform1i(program.uniform("u_over_datum"), surface_->config().sea_level ? 0 : 1);
+  if (&program == &coverage_program_) return;  // no light
+  glUniform3fv(program.uniform("u_sun_dir_body"), 1,
+               glm::value_ptr(glm::vec3(lighting.sun_dir_body)));
+  glUniform1i(program.uniform("u_has_atmosphere"), lighting.has_atmosphere ? 1 : 0);
+  // terrain.vert's u_sky_light: 0 none, 1 the technique's table, 2 its own estimate.
+  int sky_light = !lighting.sky_light ? 0 : lighting.sky_irradiance != 0 ? 1 : 2;
+  glUniform1i(program.uniform("u_sky_light"), sky_light);
+  if (lighting.sky_irradiance != 0) glBindTextureUnit(kSkyIrradianceUnit, lighting.sky_irradiance);
+  glUniform3fv(program.uniform("u_sun_irradiance"), 1, glm::value_ptr(lighting.solar_irradiance));
+  glUniform1i(program.uniform("u_shadows"), lighting.shadows ? 1 : 0);
+  // The shadow's edge: the sun's disc, and at least 0.14 degree, a little
+  // over the horizon coding's step near level, so that it does not band.
+  glUniform1f(program.uniform("u_penumbra"), float(std::max(lighting.sun_angular_radius, 0.0025)));
+  if (lighting.has_atmosphere) {
+    glm::dvec3 scale = lighting.atmo_scale;
+    glUniform3fv(program.uniform("u_atmo_scale"), 1, glm::value_ptr(glm::vec3(scale)));
+    glUniform3fv(program.uniform("u_camera_atmo"), 1,
+                 glm::value_ptr(glm::vec3(scale * camera.pos_body)));
+    glUniform3fv(program.uniform("u_sun_dir_atmo"), 1,
+                 glm::value_ptr(glm::vec3(glm::normalize(scale * lighting.sun_dir_body))));
+  }
+  const auto& maps = surface_->config().maps;
+  const SurfacePalette& palette = surface_->config().palette;
+  const bool has_sea = surface_->config().sea_level && palette.ocean;
+  glUniform1i(program.uniform("u_has_sea"), has_sea ? 1 : 0);
+  if (has_sea) glUniform3fv(program.uniform("u_ocean_albedo"), 1, glm::value_ptr(*palette.ocean));
+  glUniform1i(program.uniform("u_has_day_map"), day_map_.id() != 0 ? 1 : 0);
+  glUniform1i(program.uniform("u_has_night_map"), night_map_.id() != 0 ? 1 : 0);
+  if (maps) {
+    glBindTextureUnit(kDayMapUnit, day_map_.id());
+    if (night_map_.id() != 0) glBindTextureUnit(kNightMapUnit, night_map_.id());
+    double k = (1.0 - maps->flattening()) * (1.0 - maps->flattening());
+    glUniform1f(program.uniform("u_geodetic_k"), float(k));
+    glUniform2f(program.uniform("u_map_fade"), float(maps->files().fade_start_m),
+                float(maps->files().fade_end_m));
+    glUniform1f(program.uniform("u_night_radiance"), float(maps->files().night_radiance));
+    // A pixel of the day image on the ground, metres: the mipmap level's unit.
+    glUniform1f(program.uniform("u_map_texel_m"),
+                float(glm::pi<double>() * surface_->shape().equatorial_radius / maps->height()));
+  }
+}
+
+void TerrainRenderer::draw_tiles(
+    const Program& program, const Camera& camera,
+    const std::vector<std::pair<const SelectedTile*, const GpuTile*>>& tiles) {
+  const GLint center_loc = program.uniform("u_center_rel_eye");
+  const GLint morph_loc = program.uniform("u_morph_range");
+  const GLint center_body_loc = program.uniform("u_center_body");
+  const GLint axis_i_loc = program.uniform("u_axis_i");
+  const GLint axis_j_loc = program.uniform("u_axis_j");
+  const auto index_count = GLsizei(tile_indices().size());
+  for (const auto& [t, g] : tiles) {
+    // The one place a body-frame position meets the camera: in double.
+    glm::vec3 center_rel_eye(g->center_body - camera.pos_body);
+    glUniform3fv(center_loc, 1, glm::value_ptr(center_rel_eye));
+    glUniform2f(morph_loc, float(t->morph_start), float(t->morph_end));
+    glUniform3fv(center_body_loc, 1, glm::value_ptr(glm::vec3(g->center_body)));
+    glUniform3fv(axis_i_loc, 1, glm::value_ptr(g->axis_i));
+    glUniform3fv(axis_j_loc, 1, glm::value_ptr(g->axis_j));
+    glVertexArrayVertexBuffer(vao_.id(), 0, g->vertices.id(), 0, sizeof(TileVertex));
+    glDrawElements(GL_TRIANGLES, index_count, GL_UNSIGNED_SHORT, nullptr);
+  }
+}
+
+TerrainStats TerrainRenderer::draw(const Camera& camera, int width, int height,
+                                   const TerrainLighting& lighting, GLuint coverage) {
   ++frame_;
   LodView view = lod_view(camera, width, height, options_.pixel_budget);
   LodSelection sel = selector_.select(
@@ -126,67 +200,15 @@ TerrainStats TerrainRenderer::draw(const Camera& camera, int width, int height,
   TerrainStats stats;
   stats.tiles_wanted = int(sel.wanted.size());
 
-  program_.use();
-  glm::mat4 clip =
-      clip_from_view_reversed_z(camera.vertical_fov, double(width) / height, camera.near);
-  glUniformMatrix3fv(program_.uniform("u_view_from_body"), 1, GL_FALSE,
-                     glm::value_ptr(glm::mat3(view.view_from_body)));
-  glUniformMatrix4fv(program_.uniform("u_clip_from_view"), 1, GL_FALSE, glm::value_ptr(clip));
-  glUniform3fv(program_.uniform("u_sun_dir_body"), 1,
-               glm::value_ptr(glm::vec3(lighting.sun_dir_body)));
-  glUniform1i(program_.uniform("u_has_atmosphere"), lighting.has_atmosphere ? 1 : 0);
-  // terrain.vert's u_sky_light: 0 none, 1 the technique's table, 2 its own estimate.
-  int sky_light = !lighting.sky_light ? 0 : lighting.sky_irradiance != 0 ? 1 : 2;
-  glUniform1i(program_.uniform("u_sky_light"), sky_light);
-  if (lighting.sky_irradiance != 0) glBindTextureUnit(kSkyIrradianceUnit, lighting.sky_irradiance);
-  glUniform3fv(program_.uniform("u_sun_irradiance"), 1, glm::value_ptr(lighting.solar_irradiance));
-  glUniform1i(program_.uniform("u_shadows"), lighting.shadows ? 1 : 0);
-  // The shadow's edge: the sun's disc, and at least 0.14 degree, a little
-  // over the horizon coding's step near level, so that it does not band.
-  glUniform1f(program_.uniform("u_penumbra"),
-              float(std::max(lighting.sun_angular_radius, 0.0025)));
-  if (lighting.has_atmosphere) {
-    glm::dvec3 scale = lighting.atmo_scale;
-    glUniform3fv(program_.uniform("u_atmo_scale"), 1, glm::value_ptr(glm::vec3(scale)));
-    glUniform3fv(program_.uniform("u_camera_atmo"), 1,
-                 glm::value_ptr(glm::vec3(scale * camera.pos_body)));
-    glUniform3fv(program_.uniform("u_sun_dir_atmo"), 1,
-                 glm::value_ptr(glm::vec3(glm::normalize(scale * lighting.sun_dir_body))));
-  }
-  const auto& maps = surface_->config().maps;
-  const SurfacePalette& palette = surface_->config().palette;
-  const bool has_sea = surface_->config().sea_level && palette.ocean;
-  glUniform1i(program_.uniform("u_has_sea"), has_sea ? 1 : 0);
-  glUniform1i(program_.uniform("u_over_datum"), surface_->config().sea_level ? 0 : 1);
-  if (has_sea) glUniform3fv(program_.uniform("u_ocean_albedo"), 1, glm::value_ptr(*palette.ocean));
-  glUniform1i(program_.uniform("u_has_day_map"), day_map_.id() != 0 ? 1 : 0);
-  glUniform1i(program_.uniform("u_has_night_map"), night_map_.id() != 0 ? 1 : 0);
-  if (maps) {
-    glBindTextureUnit(kDayMapUnit, day_map_.id());
-    if (night_map_.id() != 0) glBindTextureUnit(kNightMapUnit, night_map_.id());
-    double k = (1.0 - maps->flattening()) * (1.0 - maps->flattening());
-    glUniform1f(program_.uniform("u_geodetic_k"), float(k));
-    glUniform2f(program_.uniform("u_map_fade"), float(maps->files().fade_start_m),
-                float(maps->files().fade_end_m));
-    glUniform1f(program_.uniform("u_night_radiance"), float(maps->files().night_radiance));
-    // A pixel of the day image on the ground, metres: the mipmap level's unit.
-    glUniform1f(program_.uniform("u_map_texel_m"),
-                float(glm::pi<double>() * surface_->shape().equatorial_radius / maps->height()));
-  }
-  glBindVertexArray(vao_.id());
-  glDisable(GL_CULL_FACE);  // skirts are seen from both sides
-  const GLint center_loc = program_.uniform("u_center_rel_eye");
-  const GLint morph_loc = program_.uniform("u_morph_range");
-  const GLint center_body_loc = program_.uniform("u_center_body");
-  const GLint axis_i_loc = program_.uniform("u_axis_i");
-  const GLint axis_j_loc = program_.uniform("u_axis_j");
-  const auto index_count = GLsizei(tile_indices().size());
   // Nearest first: the depth test then turns away the fragments of farther
   // ground behind a ridge before they are shaded.
   std::stable_sort(sel.tiles.begin(), sel.tiles.end(),
                    [](const SelectedTile& a, const SelectedTile& b) {
                      return a.distance < b.distance;
                    });
+  // The tiles to draw, on the GPU: both passes draw the same ones.
+  std::vector<std::pair<const SelectedTile*, const GpuTile*>> drawn;
+  const auto index_count = GLsizei(tile_indices().size());
   for (const SelectedTile& t : sel.tiles) {
     auto it = gpu_tiles_.find(t.key);
     if (it == gpu_tiles_.end()) {
@@ -203,21 +225,30 @@ TerrainStats TerrainRenderer::draw(const Camera& camera, int width, int height,
     } else {
       cache_->use(t.key, frame_);
     }
-    // The one place a body-frame position meets the camera: in double.
-    glm::vec3 center_rel_eye(it->second.center_body - camera.pos_body);
-    glUniform3fv(center_loc, 1, glm::value_ptr(center_rel_eye));
-    glUniform2f(morph_loc, float(t.morph_start), float(t.morph_end));
-    glUniform3fv(center_body_loc, 1, glm::value_ptr(glm::vec3(it->second.center_body)));
-    glUniform3fv(axis_i_loc, 1, glm::value_ptr(it->second.axis_i));
-    glUniform3fv(axis_j_loc, 1, glm::value_ptr(it->second.axis_j));
-    glVertexArrayVertexBuffer(vao_.id(), 0, it->second.vertices.id(), 0, sizeof(TileVertex));
-    glDrawElements(GL_TRIANGLES, index_count, GL_UNSIGNED_SHORT, nullptr);
+    drawn.emplace_back(&t, &it->second);
     ++stats.tiles_drawn;
     stats.triangles += index_count / 3;
     stats.max_error_px = std::max(stats.max_error_px, t.error_px);
     stats.max_level = std::max(stats.max_level, t.key.level);
     stats.nearest_m = std::min(stats.nearest_m, t.distance);
   }
+  glBindVertexArray(vao_.id());
+  glDisable(GL_CULL_FACE);  // skirts are seen from both sides
+  if (coverage != 0) {
+    if (!coverage_program_.id()) {
+      coverage_program_ =
+          Program::graphics("terrain/gpu/shaders/terrain.vert",
+                            "terrain/gpu/shaders/terrain_coverage.frag", {"TERRAIN_COVERAGE"});
+    }
+    GLint lit = 0;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &lit);
+    glBindFramebuffer(GL_FRAMEBUFFER, coverage);
+    set_uniforms(coverage_program_, camera, view, width, height, lighting);
+    draw_tiles(coverage_program_, camera, drawn);
+    glBindFramebuffer(GL_FRAMEBUFFER, GLuint(lit));
+  }
+  set_uniforms(program_, camera, view, width, height, lighting);
+  draw_tiles(program_, camera, drawn);
   for (const TileKey& k : cache_->evict(frame_)) gpu_tiles_.erase(k);
   stats.tiles_resident = cache_->tile_count();
   stats.tiles_on_gpu = gpu_tiles_.size();

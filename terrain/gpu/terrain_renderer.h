@@ -64,7 +64,13 @@ class TerrainRenderer {
   ~TerrainRenderer();
 
   // Draws into the bound framebuffer, depth test as set by the caller.
-  TerrainStats draw(const Camera& camera, int width, int height, const TerrainLighting& lighting);
+  // With a `coverage` framebuffer (multisampled, cleared by the caller) the
+  // same tiles are drawn into it first without light (terrain_coverage.frag:
+  // depth, and the ground below the datum at location 0), so that the
+  // lighting runs once a pixel in the bound one and the coverage is
+  // counted per sample (render/surface_antialiasing.h).
+  TerrainStats draw(const Camera& camera, int width, int height, const TerrainLighting& lighting,
+                    GLuint coverage = 0);
 
   // Waits until every tile this view needs is resident (capture). Throws
   // SystemError naming the missing tiles after `timeout_s`.
@@ -77,6 +83,14 @@ class TerrainRenderer {
   static LodView lod_view(const Camera& camera, int width, int height, double pixel_budget);
 
  private:
+  struct GpuTile;
+  // The uniforms of `program` that every tile shares.
+  void set_uniforms(const Program& program, const Camera& camera, const LodView& view, int width,
+                    int height, const TerrainLighting& lighting);
+  // Draws `tiles` with `program` (bound), nearest first.
+  void draw_tiles(const Program& program, const Camera& camera,
+                  const std::vector<std::pair<const SelectedTile*, const GpuTile*>>& tiles);
+
   struct GpuTile {
     Buffer vertices;
     glm::dvec3 center_body;
@@ -87,7 +101,9 @@ class TerrainRenderer {
   std::unique_ptr<TerrainSurface> surface_;
   std::unique_ptr<TileCache> cache_;
   LodSelector selector_;
-  Program program_;
+  // The lit surfaces (terrain.frag), and their coverage alone
+  // (terrain_coverage.frag), made on the first draw that asks for it.
+  Program program_, coverage_program_;
   Buffer indices_;
   VertexArray vao_;
   // The body's day and night imagery (TerrainConfig::maps), mipmapped;

@@ -45,7 +45,37 @@ TEST(PassTallyTest, CountsTheFramesThatSkippedAPass) {
             "  aerial_perspective      6.00 ms  ran 1 of 2, skipped 1\n");
 }
 
-TEST(PassTallyTest, NoFramesNoLines) { EXPECT_EQ(PassTally().summary(), ""); }
+TEST(PassTallyTest, NoFramesNoLines) {
+  EXPECT_EQ(PassTally().summary(), "");
+  EXPECT_EQ(PassTally().table(), "");
+}
+
+// --pass-table: wall and GPU time side by side (on llvmpipe the queries
+// miss what runs in the calling thread), the counts in columns, the frame
+// as a whole last.
+TEST(PassTallyTest, TableGivesWallAndGpuTimeAndTheCounts) {
+  PassTiming skipped{"stars"};
+  skipped.skipped = true;
+  PassTally tally;
+  tally.add({{"surface", 10.0, 40.0, false, false}, reused("sky_view_lut"), skipped});
+  tally.add(
+      {{"surface", 14.0, 60.0, false, false}, {"sky_view_lut", 2.0, 8.0, false, false}, skipped});
+  EXPECT_EQ(tally.table(),
+            "  pass             wall ms      GPU ms    ran  reused  skipped\n"
+            "  surface            50.00       12.00      2       0        0\n"
+            "  sky_view_lut        8.00        2.00      1       1        0\n"
+            "  stars               0.00        0.00      0       0        2\n"
+            "  frame              54.00       13.00      2\n");
+}
+
+TEST(PassTallyTest, TableMarksWallTimesNotKept) {
+  PassTally tally;
+  tally.add({ran("sky", 10.0)});
+  EXPECT_EQ(tally.table(),
+            "  pass      wall ms      GPU ms    ran  reused  skipped\n"
+            "  sky             -       10.00      1       0        0\n"
+            "  frame           -       10.00      1\n");
+}
 
 }  // namespace
 }  // namespace planet

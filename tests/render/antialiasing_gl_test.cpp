@@ -15,6 +15,7 @@
 #include <gtest/gtest.h>
 #include <glm/gtc/constants.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -57,28 +58,29 @@ struct EdgeError {
   double one_sample = 0, four_samples = 0;  // RMS of luminance, relative to the reference's
 };
 
-// Over the pixels whose kScale x kScale block in the large frame holds both
-// open sky and ground: the RMS relative error of the one- and four-sample
-// frames against the block's mean.
-EdgeError edge_error(const Body& body, const PlaceView& view) {
-  Frame large = render(body, view, kWidth * kScale, kHeight * kScale, 1, kScale);
-  Frame one = render(body, view, kWidth, kHeight, 1, 1.0);
-  Frame four = render(body, view, kWidth, kHeight, 4, 1.0);
+// Over the pixels whose `scale` x `scale` block in the large frame holds
+// both open sky and ground: the RMS relative error of the one- and
+// four-sample frames (`width` x `height`) against the block's mean.
+EdgeError edge_error(const Body& body, const PlaceView& view, int width = kWidth,
+                     int height = kHeight, int scale = kScale) {
+  Frame large = render(body, view, width * scale, height * scale, 1, scale);
+  Frame one = render(body, view, width, height, 1, 1.0);
+  Frame four = render(body, view, width, height, 4, 1.0);
   EdgeError e;
-  for (int y = 0; y < kHeight; ++y) {
-    for (int x = 0; x < kWidth; ++x) {
+  for (int y = 0; y < height; ++y) {
+    for (int x = 0; x < width; ++x) {
       double sum = 0;
       int open = 0;
-      for (int j = 0; j < kScale; ++j) {
-        for (int i = 0; i < kScale; ++i) {
-          size_t p = size_t(y * kScale + j) * size_t(kWidth * kScale) + size_t(x * kScale + i);
+      for (int j = 0; j < scale; ++j) {
+        for (int i = 0; i < scale; ++i) {
+          size_t p = size_t(y * scale + j) * size_t(width * scale) + size_t(x * scale + i);
           sum += luminance(large.hdr, p);
           open += std::isinf(large.distance[p]) ? 1 : 0;
         }
       }
-      if (open == 0 || open == kScale * kScale) continue;
-      double reference = sum / (kScale * kScale);
-      size_t p = size_t(y) * kWidth + size_t(x);
+      if (open == 0 || open == scale * scale) continue;
+      double reference = sum / (scale * scale);
+      size_t p = size_t(y) * size_t(width) + size_t(x);
       double a = (luminance(one.hdr, p) - reference) / reference;
       double b = (luminance(four.hdr, p) - reference) / reference;
       e.one_sample += a * a;
@@ -148,6 +150,44 @@ TEST(AntialiasingGLTest, TheAlpsEdgeOverTheElevationGridHasNoBrightPixel) {
   EXPECT_LT(e.four_samples, 0.75 * e.one_sample);
 }
 
+// The edges of a 128 x 64 frame against the same frame drawn 8 x 8 times
+// larger and averaged down (64 rays a pixel): a ridge of the Alps against
+// the sky from 2 m, and Earth's limb from 400 km. The surfaces are shaded
+// once a pixel and their edges antialiased by four samples' coverage;
+// `before` is the error when each of the four samples was shaded
+// (measured on the same views before the surfaces were shaded once a
+// pixel): the edges must come as close as that, or closer.
+TEST(AntialiasingGLTest, EdgesAsCloseToSixtyFourRaysAsPerSampleShading) {
+  auto context = GlContext::create_headless();
+  // The procedural Earth, over which `before` was measured.
+  Body earth = load_body(project_root() / "tests/data/planets/earth_procedural.json");
+  struct Case {
+    const char* name;
+    Geodetic place;
+    double pitch_deg, fov_deg;
+    double before;  // the four-sample error when every sample was shaded
+  };
+  Geodetic alps{glm::radians(46.5), glm::radians(8.0), 0.0};
+  alps.height =
+      ground_height(TerrainSurface(earth.shape, parse_terrain(earth)), Geodesy(earth.shape), alps) +
+      2.0;
+  for (const Case& c : {Case{"ridge from 2 m", alps, 8.0, 60.0, 0.0869},
+                        Case{"limb from 400 km",
+                             {glm::radians(46.5), glm::radians(8.0), 400e3},
+                             -18.0,
+                             50.0,
+                             0.0780}}) {
+    auto view = view_from_place(earth.shape, c.place, 30.0, c.pitch_deg, c.fov_deg, 25.0, 150.0);
+    EdgeError e = edge_error(earth, view, 128, 64, 8);
+    std::printf(
+        "%s: %d edge pixels; luminance error against 64 rays a pixel: %.2f %% with one "
+        "sample, %.2f %% with four\n",
+        c.name, e.pixels, 100.0 * e.one_sample, 100.0 * e.four_samples);
+    EXPECT_GT(e.pixels, 64) << c.name << ": the view shows too little edge";
+    EXPECT_LE(e.four_samples, c.before) << c.name;
+  }
+}
+
 // The Moon's limb against black space from 100 km: its surfaces are the
 // image, and an edge pixel is its coverage times the ground (measured:
 // 80.1 % with one sample, 37.3 % with four: relative to edge pixels that
@@ -164,6 +204,50 @@ TEST(AntialiasingGLTest, TheMoonsLimbAgainstSpace) {
               e.pixels, 100.0 * e.one_sample, 100.0 * e.four_samples);
   EXPECT_GT(e.pixels, kWidth / 2);
   EXPECT_LT(e.four_samples, 0.5 * e.one_sample);
+}
+
+// The surfaces' light runs once a pixel, at its centre, whatever the
+// samples: on the Moon, whose surfaces are the image, a pixel the ground
+// covers whole is the one-sample frame's own, bit for bit; only the edges
+// differ. (Shaded per sample, such a pixel was the mean of four lit
+// points.)
+TEST(AntialiasingGLTest, SurfacesAreLitOnceAPixel) {
+  auto context = GlContext::create_headless();
+  Body moon = load_body(data_dir() / "planets" / "moon.json");
+  auto view = view_from_place(moon.shape, {glm::radians(10.0), glm::radians(20.0), 100e3}, 90.0,
+                              -8.0, 50.0, 20.0, 120.0);
+  Frame one = render(moon, view, kWidth, kHeight, 1, 1.0);
+  Frame four = render(moon, view, kWidth, kHeight, 4, 1.0);
+  int whole = 0, differ = 0, edges_differ = 0;
+  for (int y = 0; y < kHeight; ++y) {
+    for (int x = 0; x < kWidth; ++x) {
+      // Whole: the pixel and its neighbours ground at one sample, so that
+      // no sample of it can be open.
+      bool ground = true;
+      for (int j = -1; j <= 1; ++j) {
+        for (int i = -1; i <= 1; ++i) {
+          int xx = std::clamp(x + i, 0, kWidth - 1), yy = std::clamp(y + j, 0, kHeight - 1);
+          ground = ground && std::isfinite(one.distance[size_t(yy) * kWidth + size_t(xx)]);
+        }
+      }
+      size_t p = size_t(y) * kWidth + size_t(x);
+      bool same = std::equal(one.hdr.begin() + long(4 * p), one.hdr.begin() + long(4 * p + 4),
+                             four.hdr.begin() + long(4 * p));
+      if (ground) {
+        ++whole;
+        differ += same ? 0 : 1;
+      } else {
+        edges_differ += same ? 0 : 1;
+      }
+    }
+  }
+  std::printf("%d pixels ground whole, %d of them not the one-sample frame's; %d others differ\n",
+              whole, differ, edges_differ);
+  EXPECT_GT(whole, kWidth * kHeight / 5);
+  // Some pixels the ground covers whole at one sample are edges at four:
+  // a sample beyond a ridge's crest that no centre meets.
+  EXPECT_LT(differ, whole / 50);
+  EXPECT_GT(edges_differ, 0) << "the edges are antialiased";
 }
 
 TEST(AntialiasingGLTest, FramesAreTheSameRunToRun) {

@@ -85,11 +85,21 @@ void main() {
     albedo = mix(albedo, u_ocean_albedo, sea);
   }
   vec3 emitted = vec3(0.0);
-  if (u_has_day_map != 0) {
+  // The mipmap level from the fragment's footprint on the ground: the
+  // longitude's wrap would break the texture coordinates' derivatives.
+  // (Derivatives outside the branch below, which pixels of a quad take
+  // apart.)
+  float footprint = max(length(dFdx(v_position_body)), length(dFdy(v_position_body)));
+  float fade = smoothstep(u_map_fade.x, u_map_fade.y, v_eye_distance);
+  // The sun's height over the ground, for the night's lights.
+  float sun_sin = dot(normalize(v_position_body), u_sun_dir_body);
+  // Lit as the sun sets, out by the time it stands 1 degree up.
+  float lights_on = u_has_night_map != 0 ? 1.0 - smoothstep(-0.05, 0.017, sun_sin) : 0.0;
+  // Near the camera on land by day the images add nothing (the mixes
+  // below take none of them): most of a view from the ground, and most
+  // of the images' cost on a GL that fetches texels in software.
+  if (u_has_day_map != 0 && (fade > 0.0 || sea > 0.0 || lights_on > 0.0)) {
     vec2 uv = map_uv(v_position_body);
-    // The mipmap level from the fragment's footprint on the ground: the
-    // longitude's wrap would break the texture coordinates' derivatives.
-    float footprint = max(length(dFdx(v_position_body)), length(dFdy(v_position_body)));
     float lod = log2(max(footprint / u_map_texel_m, 1e-6));
     vec4 day = textureLod(u_day_map, uv, lod);
     // The image's land, turned as the heights turn it (procedural_height.cpp).
@@ -100,16 +110,12 @@ void main() {
     // fade, the image's: its water and land where it draws them (the
     // heights follow its mask only within its 20 km pixels), with rock and
     // snow as the palette has them.
-    float fade = smoothstep(u_map_fade.x, u_map_fade.y, v_eye_distance);
     float land_cover = clamp(2.0 * v_albedo.a - 1.0, 0.0, 1.0);
     vec3 land_albedo = mix(ground_albedo, image, land_cover * fade);
     vec3 water_albedo = mix(u_ocean_albedo, image, 1.0 - land);
     albedo = mix(land_albedo, water_albedo, mix(sea, 1.0 - land, fade));
-    if (u_has_night_map != 0) {
-      // Lit as the sun sets, out by the time it stands 1 degree up.
-      float sun_sin = dot(normalize(v_position_body), u_sun_dir_body);
-      float on = 1.0 - smoothstep(-0.05, 0.017, sun_sin);
-      emitted = on * u_night_radiance * textureLod(u_night_map, uv, lod).rgb;
+    if (lights_on > 0.0) {
+      emitted = lights_on * u_night_radiance * textureLod(u_night_map, uv, lod).rgb;
     }
   }
   o_radiance = vec4(albedo / kPi * irradiance + emitted, 1.0);

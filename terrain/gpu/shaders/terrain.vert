@@ -77,6 +77,7 @@ void main() {
   v_position_body = u_center_body + a_offset;
   v_eye_distance = d;
   v_over_sea = a_sea.x + morph * a_sea.y;
+#ifndef TERRAIN_COVERAGE  // the coverage pass (terrain_coverage.frag) takes no light
   v_sun_over_horizon = u_shadows != 0 ? sun_over_horizon(u_center_body + a_offset) : kHalfPi;
   v_sun_transmittance = vec3(1.0);
   v_sky_irradiance = vec3(0.0);
@@ -90,4 +91,5 @@ void main() {
           surface_sky_irradiance_estimate(p, a_normal, u_sun_dir_atmo, v_sun_transmittance);
     }
   }
+#endif
 }
