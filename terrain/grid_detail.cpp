@@ -17,24 +17,6 @@ namespace {
 // the detail is
 //   d_k = (1 / m) [d/du (A_k F_k) + d/dv (A_k G_k)],  m = 2^k,
 // where A_k is the octave's amplitude (smooth, from the nodes' local
-// relief) and F_k, G_k are gradient noises (Perlin 2002) on a lattice m
-// times finer than the grid's. F's lattice points on the cells' vertical
-// edges have no gradient, so F is zero all along those edges (gradient
-// noise is zero at its lattice points and, between two of them on a
-// lattice line, takes only their gradients' components along it); G the
-// same on the horizontal edges. Over a cell, the integral of
-// d/du (A F) is A F on its east edge less A F on its west edge (Gauss):
-// zero, whatever A is; and so for d/dv (A G). The cell's mean is zero to
-// the rounding, with no integral to compute. At a sample, a lattice point
-// (m is even) also without gradient in F and G, both noises and their
-// slopes are zero, and so is d_k. Each octave is a divergence of a vector
-// field, so its spectrum is the noises' times |k|^2: isotropic, and
-// rougher than gradient noise's by one power of the frequency.
-// The relief noise. In the grid's sample units (u, v), with the cells'
-// edges at whole numbers after edge_offset, octave k (k = 1, 2, ...) of
-// the detail is
-//   d_k = (1 / m) [d/du (A_k F_k) + d/dv (A_k G_k)],  m = 2^k,
-// where A_k is the octave's amplitude (smooth, from the nodes' local
 // relief) and F_k, G_k are gradient noises on a lattice m times finer
 // than the grid's (noise.h's edge_noise). F is zero all along the cells'
 // vertical edges, G along their horizontal ones. Over a cell, the
