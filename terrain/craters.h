@@ -71,14 +71,27 @@ inline double unit(uint32_t& state) {
   return double(state >> 8) / double(1u << 24);
 }
 
+// The crater of cell (x, y, z), if it holds one (chance `density`): its
+// centre c drawn within the cell in the order z, y, x, then its radius r
+// (each draw its own statement, so that every compiler places the same
+// craters), between 0.1 and 0.25 cell; s is the state its cell's further
+// draws go on from.
+inline bool draw_crater(int64_t x, int64_t y, int64_t z, double density, uint32_t seed, uint32_t& s,
+                        glm::dvec3& c, double& r) {
+  s = cell_hash(x, y, z, seed);
+  if (unit(s) >= density) return false;
+  c.z = double(z) + unit(s);
+  c.y = double(y) + unit(s);
+  c.x = double(x) + unit(s);
+  r = kMinRadius + (kMaxRadius - kMinRadius) * unit(s);
+  return true;
+}
+
 // Calls f(q, c, r, s) for each crater that can reach p: q is p and c the
 // crater's centre in cells of a lattice of spacing `cell`, r its radius
-// in cells, s the state its cell's draws go on from. A cell holds a crater
-// with chance `density`, its centre drawn within the cell in the order z,
-// y, x, then its radius (each draw its own statement, so that every
-// compiler places the same craters), between 0.1 and 0.25 cell: a crater
-// reaches at most 0.625 cell from its centre, and only the neighbour cells
-// on the near side of each axis can touch p.
+// in cells, s the state its cell's draws go on from (draw_crater). A
+// crater reaches at most 0.625 cell from its centre, and only the
+// neighbour cells on the near side of each axis can touch p.
 template <typename F>
 void for_each_crater(const glm::dvec3& p, double cell, double density, uint32_t seed, F&& f) {
   const glm::dvec3 q = p / cell;
@@ -90,13 +103,10 @@ void for_each_crater(const glm::dvec3& p, double cell, double density, uint32_t 
   for (int dz = lo(frac.z); dz <= hi(frac.z); ++dz) {
     for (int dy = lo(frac.y); dy <= hi(frac.y); ++dy) {
       for (int dx = lo(frac.x); dx <= hi(frac.x); ++dx) {
-        uint32_t s = cell_hash(cx + dx, cy + dy, cz + dz, seed);
-        if (unit(s) >= density) continue;
+        uint32_t s;
         glm::dvec3 c;
-        c.z = double(cz + dz) + unit(s);
-        c.y = double(cy + dy) + unit(s);
-        c.x = double(cx + dx) + unit(s);
-        double r = kMinRadius + (kMaxRadius - kMinRadius) * unit(s);
+        double r;
+        if (!draw_crater(cx + dx, cy + dy, cz + dz, density, seed, s, c, r)) continue;
         f(q, c, r, s);
       }
     }
@@ -131,13 +141,10 @@ void for_each_surface_crater(const glm::dvec3& p, double cell, double density, u
   for (int dz = lo(frac.z, n.z); dz <= hi(frac.z, n.z); ++dz) {
     for (int dy = lo(frac.y, n.y); dy <= hi(frac.y, n.y); ++dy) {
       for (int dx = lo(frac.x, n.x); dx <= hi(frac.x, n.x); ++dx) {
-        uint32_t s = cell_hash(cx + dx, cy + dy, cz + dz, seed);
-        if (unit(s) >= density) continue;
+        uint32_t s;
         glm::dvec3 c;
-        c.z = double(cz + dz) + unit(s);
-        c.y = double(cy + dy) + unit(s);
-        c.x = double(cx + dx) + unit(s);
-        double r = kMinRadius + (kMaxRadius - kMinRadius) * unit(s);
+        double r;
+        if (!draw_crater(cx + dx, cy + dy, cz + dz, density, seed, s, c, r)) continue;
         const double length = glm::length(c);
         if (std::abs(length - sphere) > kShellHalfWidth) continue;
         f(q, c * (sphere / length), r, s);
