@@ -72,9 +72,9 @@ TEST(EclipseTest, TotalSolarEclipseOf2024April8MatchesNasa) {
   // path width 197.5 km, central duration 04m28s. Ours: 18:18:33.1 TT,
   // 25.299 N 104.170 W, 197.4 km, 4m27.9s.
   // The time misses the 2 s asked by 2.1 s: at 18:18:29 TT our shadow axis
-  // crosses the Canon's fundamental plane 3.9 km east of its (x = -0.161221
-  // against the elements' -0.160606 Earth radii, y within 0.7 km), 3.7 s of
-  // the shadow's motion. That is Moon98's error (ELP2000-82 truncated to a
+  // crosses the Canon's fundamental plane 3.9 km behind (west of) its own
+  // (x = -0.161221 against the elements' -0.160606 Earth radii, y within
+  // 0.7 km), 3.7 s of the shadow's motion. That is Moon98's error (ELP2000-82 truncated to a
   // few arcseconds; the Canon took ELP2000-82 whole): 2.1 arcsec of the
   // Moon's longitude. Held at 5 s, the size of that error, not hidden.
   expect_solar({"2024-04-08", "2024-04-08T18:18:29Z", 74.0, 25.3, -104.1, 197.5, 268.0, 5.0});
