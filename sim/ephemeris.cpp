@@ -9,9 +9,8 @@ namespace planet {
 
 namespace {
 
-constexpr double kSecondsPerDay = 86400.0;
-constexpr double kJ2000 = 2451545.0;          // JD of 2000-01-01T12:00:00
-constexpr double kAuMetres = 149597870700.0;  // IAU 2012
+constexpr double kJulianDaySeconds = 86400.0;
+constexpr double kJ2000 = 2451545.0;  // JD of 2000-01-01T12:00:00
 constexpr double kLightMetresPerSecond = 299792458.0;
 constexpr double kAuLightSeconds = kAuMetres / kLightMetresPerSecond;
 
@@ -51,7 +50,7 @@ double delta_t_before_table(double y) {
 
 // The Julian date of a UTC instant split as ERFA likes it (J2000 + days),
 // which keeps the fraction of the day exact to microseconds.
-double days_since_j2000(UtcSeconds utc) { return utc / kSecondsPerDay; }
+double days_since_j2000(UtcSeconds utc) { return utc / kJulianDaySeconds; }
 
 glm::dvec3 to_glm(const double v[3]) { return {v[0], v[1], v[2]}; }
 
@@ -59,7 +58,7 @@ glm::dvec3 to_glm(const double v[3]) { return {v[0], v[1], v[2]}; }
 
 double delta_t(UtcSeconds utc) {
   // The decimal year, near enough for a quantity that moves under 1 s a year.
-  double year = 2000.0 + (utc / kSecondsPerDay + 0.5) / 365.2425;
+  double year = 2000.0 + (utc / kJulianDaySeconds + 0.5) / 365.2425;
   const double last_year = kTableFirstYear + double(kDeltaT.size() - 1);
   if (year < kTableFirstYear) return delta_t_before_table(year);
   if (year >= last_year) {
@@ -76,7 +75,7 @@ ErfaDates erfa_dates(UtcSeconds utc) {
   ErfaDates d;
   d.tt1 = d.ut11 = kJ2000;
   d.tt2 = days_since_j2000(utc + tt_minus_utc(utc));
-  d.ut12 = d.tt2 - delta_t(utc) / kSecondsPerDay;
+  d.ut12 = d.tt2 - delta_t(utc) / kJulianDaySeconds;
   return d;
 }
 
@@ -107,7 +106,7 @@ glm::dvec3 sun_pos_gcrs(UtcSeconds utc) {
   // c), with the Sun's gravitational term in ERFA's own formula.
   double v[3], pnat[3], ppr[3];
   for (int i = 0; i < 3; ++i) {
-    v[i] = pvb[1][i] * kAuLightSeconds / kSecondsPerDay;
+    v[i] = pvb[1][i] * kAuLightSeconds / kJulianDaySeconds;
     pnat[i] = sun_au[i] / distance_au;
   }
   double v2 = v[0] * v[0] + v[1] * v[1] + v[2] * v[2];
@@ -121,7 +120,7 @@ glm::dvec3 moon_pos_gcrs(UtcSeconds utc) {
   eraMoon98(d.tt1, d.tt2, pv);
   // One pass of light time: 1.3 s, in which the Moon moves 1.3 km; the
   // second pass would move it by millimetres.
-  double light_days = eraPm(pv[0]) * kAuLightSeconds / kSecondsPerDay;
+  double light_days = eraPm(pv[0]) * kAuLightSeconds / kJulianDaySeconds;
   eraMoon98(d.tt1, d.tt2 - light_days, pv);
   return to_glm(pv[0]) * kAuMetres;
 }

@@ -14,6 +14,9 @@
 
 namespace planet {
 
+// The astronomical unit, metres (IAU 2012).
+inline constexpr double kAuMetres = 149597870700.0;
+
 // TT - UT1 in seconds. 1990 to 2026: the observed values (IERS, yearly,
 // interpolated; 68.8 s in August 2017, 69.2 s in April 2024); 2026 on: held
 // at the last, since it now changes by well under a second a year; before

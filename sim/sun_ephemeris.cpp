@@ -18,7 +18,6 @@ namespace planet {
 namespace {
 
 constexpr double kSecondsPerDay = 86400.0;
-constexpr double kAuMetres = 149597870700.0;
 // Mean obliquity of the ecliptic at J2000 (Meeus eq. 22.2 at T = 0).
 constexpr double kObliquityJ2000Deg = 23.4392911;
 
