@@ -6,6 +6,7 @@
 #include <glm/gtc/constants.hpp>
 
 #include <cmath>
+#include <vector>
 
 namespace planet {
 
@@ -286,18 +287,36 @@ std::optional<LunarEclipse> lunar_eclipse(UtcSeconds near, const EclipseConstant
 }
 
 Eclipse find_eclipse(UtcSeconds day, const EclipseConstants& c) {
+  // Each eclipse's greatest phase falls within minutes of the Moon's least
+  // angle from the Sun (new Moon) or from the point opposite it (full
+  // Moon): found on a half-hour grid over the day and 3 hours either side,
+  // it is the middle of the 6 hours that solar_eclipse and lunar_eclipse
+  // search.
+  auto syzygies = [&](double sign) {
+    auto angle = [sign](double t) {
+      glm::dvec3 moon = glm::normalize(moon_pos_gcrs(t));
+      glm::dvec3 sun = glm::normalize(sun_pos_gcrs(t));
+      return std::acos(glm::clamp(glm::dot(moon, sign * sun), -1.0, 1.0));
+    };
+    std::vector<UtcSeconds> found;
+    const double step = 1800.0;
+    double t0 = day - 3.0 * 3600.0, before = angle(t0 - step), now = angle(t0);
+    for (double t = t0; t <= day + 27.0 * 3600.0; t += step) {
+      double after = angle(t + step);
+      if (now < before && now <= after) found.push_back(t);
+      before = now, now = after;
+    }
+    return found;
+  };
   Eclipse found;
   auto on_day = [&](UtcSeconds t) { return t >= day && t < day + 86400.0; };
-  // Windows of 6 hours each side, centred every 6 hours, cover the day.
-  for (double centre = day + 3.0 * 3600.0; centre < day + 86400.0; centre += 6.0 * 3600.0) {
-    if (!found.solar) {
-      auto s = solar_eclipse(centre, c);
-      if (s && on_day(s->greatest)) found.solar = s;
-    }
-    if (!found.lunar) {
-      auto l = lunar_eclipse(centre, c);
-      if (l && on_day(l->greatest)) found.lunar = l;
-    }
+  for (UtcSeconds t : syzygies(1.0)) {
+    auto e = solar_eclipse(t, c);
+    if (e && on_day(e->greatest)) found.solar = e;
+  }
+  for (UtcSeconds t : syzygies(-1.0)) {
+    auto e = lunar_eclipse(t, c);
+    if (e && on_day(e->greatest)) found.lunar = e;
   }
   return found;
 }
