@@ -45,6 +45,7 @@ std::unique_ptr<CLI::App> make_cli() {
   add_accuracy_command(*app);
   add_reference_command(*app);
   add_cluster_command(*app);
+  add_eclipse_command(*app);
   CLI::App& probe = add_probe_command(*app);
   add_probe_atmosphere_commands(probe);
   add_fly_command(*app);

@@ -13,6 +13,8 @@ void add_accuracy_command(CLI::App& app);
 void add_reference_command(CLI::App& app);
 // `planet cluster slurm|kubernetes`: a command split over a scheduler.
 void add_cluster_command(CLI::App& app);
+// `planet eclipse DATE`: the circumstances of that day's eclipse.
+void add_eclipse_command(CLI::App& app);
 // `planet probe <quantity>`: the probe parent, to which modules add their
 // quantities (transmittance, sky, sun, ...).
 CLI::App& add_probe_command(CLI::App& app);

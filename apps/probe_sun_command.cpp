@@ -67,6 +67,14 @@ void run(const ProbeSunArgs& args) {
                 glm::degrees(e.declination));
     std::printf("distance   %.6f AU\n", e.distance_au);
   }
+  if (auto other = companion_pos_body(body.ephemeris, body.rotation, utc)) {
+    // Seen from the place itself: the Moon's parallax reaches a degree.
+    glm::dvec3 place = Geodesy(body.shape).body_from_geodetic({lat, lon, 0.0});
+    HorizonAngles o = horizon_angles(glm::normalize(*other - place), lat, lon);
+    std::printf("%-10s elevation %.4f deg, azimuth %.4f deg, %.0f km from the centre\n",
+                companion_name(body.ephemeris), glm::degrees(o.elevation), glm::degrees(o.azimuth),
+                glm::length(*other) / 1000.0);
+  }
 }
 
 }  // namespace

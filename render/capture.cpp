@@ -90,6 +90,12 @@ nlohmann::json sidecar(const FlightScript& script, const FlightPath& path, const
         {"deepest_level", terrain.max_level}}},
   };
   if (script.has_clock) j["utc"] = format_utc(path.utc_at(t));
+  // Where the Moon (or, over the Moon, the Earth) really is then.
+  if (auto other = path.companion_pos_at(t)) {
+    j[fmt::format("{}_pos_body_m",
+                  script.body.ephemeris.model == SunEphemeris::Model::kEarth ? "moon" : "earth")] =
+        {other->x, other->y, other->z};
+  }
   return j;
 }
 

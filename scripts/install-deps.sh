@@ -11,6 +11,8 @@ packages=(
   libepoxy-dev libegl-dev libgl-dev libegl-mesa0 libgl1-mesa-dri libglfw3-dev
   # maths, geodesy, geometry, images
   libglm-dev libgeographiclib-dev libosd-dev libopenimageio-dev
+  # the Sun's and the Moon's places, the Earth's orientation, leap seconds
+  liberfa-dev
   # JPEG (Earth's imagery) through libjpeg-turbo itself
   libjpeg-dev
   # OpenImageIO's own oiiotool reads the captured EXRs' metadata in a test

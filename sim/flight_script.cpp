@@ -355,6 +355,11 @@ glm::dvec3 FlightPath::sun_dir_at(double time) const {
   return sun_dir_body(script_->body.ephemeris, script_->body.rotation, utc_at(time));
 }
 
+std::optional<glm::dvec3> FlightPath::companion_pos_at(double time) const {
+  if (!script_->has_clock) return std::nullopt;
+  return companion_pos_body(script_->body.ephemeris, script_->body.rotation, utc_at(time));
+}
+
 Geodetic FlightPath::place_at(double time) const {
   size_t orbit = orbit_segment(time);
   if (orbit != std::string::npos)

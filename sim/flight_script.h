@@ -108,6 +108,9 @@ class FlightPath {
   // clock, one second per second elsewhere.
   UtcSeconds utc_at(double time) const;
   glm::dvec3 sun_dir_at(double time) const;
+  // Where the Moon (over Earth) or the Earth (over the Moon) really is at
+  // that time, body frame, metres: scripts with a clock only.
+  std::optional<glm::dvec3> companion_pos_at(double time) const;
 
  private:
   size_t orbit_segment(double time) const;  // keyframe index, or npos

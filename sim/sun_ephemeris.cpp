@@ -2,7 +2,10 @@
 
 #include "core/error.h"
 #include "core/json_reader.h"
+#include "sim/ephemeris.h"
 #include "sim/mars24.h"
+
+#include <erfa.h>
 
 #include <fmt/format.h>
 
@@ -18,35 +21,19 @@ constexpr double kSecondsPerDay = 86400.0;
 // Mean obliquity of the ecliptic at J2000 (Meeus eq. 22.2 at T = 0).
 constexpr double kObliquityJ2000Deg = 23.4392911;
 
-double deg_sin(double deg) { return std::sin(glm::radians(deg)); }
-double deg_cos(double deg) { return std::cos(glm::radians(deg)); }
-
 }  // namespace
 
 EarthSun earth_sun(UtcSeconds utc) {
-  // Julian centuries of terrestrial time since J2000 (Meeus eq. 25.1).
-  const double t = (utc + tt_minus_utc(utc)) / (kSecondsPerDay * 36525.0);
-  // Geometric mean longitude and mean anomaly, degrees (eq. 25.2, 25.3).
-  const double l0 = 280.46646 + t * (36000.76983 + t * 0.0003032);
-  const double m = 357.52911 + t * (35999.05029 - t * 0.0001537);
-  const double e = 0.016708634 - t * (0.000042037 + t * 0.0000001267);
-  // Equation of the centre.
-  const double c = (1.914602 - t * (0.004817 + t * 0.000014)) * deg_sin(m) +
-                   (0.019993 - 0.000101 * t) * deg_sin(2 * m) + 0.000289 * deg_sin(3 * m);
-  const double true_longitude = l0 + c;
-  const double true_anomaly = m + c;
-  // Apparent longitude: aberration and nutation in longitude (eq. 25.8 area).
-  const double omega = 125.04 - 1934.136 * t;
-  const double lambda = true_longitude - 0.00569 - 0.00478 * deg_sin(omega);
-  // Obliquity: mean (eq. 22.2) corrected for nutation (eq. 25.8).
-  const double eps0 =
-      23.0 + (26.0 + (21.448 - t * (46.8150 + t * (0.00059 - t * 0.001813))) / 60.0) / 60.0;
-  const double eps = eps0 + 0.00256 * deg_cos(omega);
+  // GCRS to the true equator and equinox of date.
+  ErfaDates d = erfa_dates(utc);
+  double npb[3][3];
+  eraPnm06a(d.tt1, d.tt2, npb);
+  glm::dvec3 gcrs = sun_pos_gcrs(utc), p;
+  for (int r = 0; r < 3; ++r) p[r] = npb[r][0] * gcrs.x + npb[r][1] * gcrs.y + npb[r][2] * gcrs.z;
   EarthSun sun;
-  sun.right_ascension = std::atan2(deg_cos(eps) * deg_sin(lambda), deg_cos(lambda));
-  sun.declination = std::asin(deg_sin(eps) * deg_sin(lambda));
-  // Eq. 25.5.
-  sun.distance_au = 1.000001018 * (1 - e * e) / (1 + e * deg_cos(true_anomaly));
+  sun.right_ascension = std::atan2(p.y, p.x);
+  sun.declination = std::asin(p.z / glm::length(p));
+  sun.distance_au = glm::length(p) / kAuMetres;
   return sun;
 }
 
@@ -54,6 +41,8 @@ std::string SunEphemeris::name() const {
   switch (model) {
     case Model::kEarth:
       return "earth";
+    case Model::kMoon:
+      return "moon";
     case Model::kMars24:
       return "mars24";
     case Model::kCircularOrbit:
@@ -69,6 +58,8 @@ SunEphemeris parse_ephemeris(JsonObject ephemeris) {
   std::string model = ephemeris.string("model");
   if (model == "earth") {
     e.model = SunEphemeris::Model::kEarth;
+  } else if (model == "moon") {
+    e.model = SunEphemeris::Model::kMoon;
   } else if (model == "mars24") {
     e.model = SunEphemeris::Model::kMars24;
   } else if (model == "circular_orbit") {
@@ -77,8 +68,9 @@ SunEphemeris parse_ephemeris(JsonObject ephemeris) {
     e.orbit_period = ephemeris.number("orbit_period_days", 1e-3, 1e8) * kSecondsPerDay;
     e.longitude_j2000 = glm::radians(ephemeris.number("longitude_j2000_deg", -360.0, 360.0));
   } else {
-    ephemeris.fail("model",
-                   fmt::format("'{}' is not a known model (earth, mars24, circular_orbit)", model));
+    ephemeris.fail(
+        "model",
+        fmt::format("'{}' is not a known model (earth, moon, mars24, circular_orbit)", model));
   }
   ephemeris.finish();
   return e;
@@ -87,13 +79,14 @@ SunEphemeris parse_ephemeris(JsonObject ephemeris) {
 glm::dvec3 sun_dir_body(const SunEphemeris& ephemeris, const BodyRotation& rotation,
                         UtcSeconds utc) {
   switch (ephemeris.model) {
-    case SunEphemeris::Model::kEarth: {
-      // Right ascension and declination are of date, and W is the mean
-      // sidereal time of date: together they place the sun over Earth.
-      EarthSun sun = earth_sun(utc);
-      glm::dvec3 dir_icrf(std::cos(sun.declination) * std::cos(sun.right_ascension),
-                          std::cos(sun.declination) * std::sin(sun.right_ascension),
-                          std::sin(sun.declination));
+    case SunEphemeris::Model::kEarth:
+      // The Earth's true frame, not the body file's uniform spin about a
+      // fixed pole: that one drifts from the sky by the precession since
+      // J2000 (0.3 deg by 2024), which the sun's place must not.
+      return glm::normalize(itrs_from_gcrs(utc) * sun_pos_gcrs(utc));
+    case SunEphemeris::Model::kMoon: {
+      // The GCRS's axes are the ICRF's.
+      glm::dvec3 dir_icrf = glm::normalize(sun_pos_gcrs(utc) - moon_pos_gcrs(utc));
       return glm::normalize(rotation.body_from_inertial(utc) * rotation.inertial_from_icrf() *
                             dir_icrf);
     }
@@ -122,6 +115,23 @@ glm::dvec3 sun_dir_body(const SunEphemeris& ephemeris, const BodyRotation& rotat
   }
   throw InputError(
       "the body has no \"ephemeris\": its sun can only be given as elevation and azimuth");
+}
+
+std::optional<glm::dvec3> companion_pos_body(const SunEphemeris& ephemeris,
+                                             const BodyRotation& rotation, UtcSeconds utc) {
+  if (ephemeris.model == SunEphemeris::Model::kEarth) {
+    return itrs_from_gcrs(utc) * moon_pos_gcrs(utc);
+  }
+  if (ephemeris.model == SunEphemeris::Model::kMoon) {
+    return rotation.body_from_inertial(utc) * rotation.inertial_from_icrf() * -moon_pos_gcrs(utc);
+  }
+  return std::nullopt;
+}
+
+const char* companion_name(const SunEphemeris& ephemeris) {
+  if (ephemeris.model == SunEphemeris::Model::kEarth) return "Moon";
+  if (ephemeris.model == SunEphemeris::Model::kMoon) return "Earth";
+  return "";
 }
 
 HorizonAngles horizon_angles(const glm::dvec3& dir_body, double lat, double lon) {

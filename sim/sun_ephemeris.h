@@ -1,14 +1,15 @@
 #pragma once
 // Where the sun is, seen from a body at a UTC instant: a unit vector in the
-// body-fixed frame. Earth uses a standard low-precision solar position
-// (Meeus 1998, "Astronomical Algorithms", ch. 25, about 0.01 deg over
-// 1950-2050), Mars the Mars24 algorithm, and other bodies a circular orbit
-// in the ecliptic.
+// body-fixed frame. Earth and the Moon take the Sun and the Moon where ERFA
+// puts them (sim/ephemeris.h: well under an arcsecond for the Sun, a few
+// for the Moon), Mars the Mars24 algorithm, and other bodies a circular
+// orbit in the ecliptic.
 #include "sim/body_rotation.h"
 #include "sim/utc_time.h"
 
 #include <glm/glm.hpp>
 
+#include <optional>
 #include <string>
 
 namespace planet {
@@ -16,7 +17,7 @@ namespace planet {
 class JsonObject;
 
 // The sun's apparent place from Earth, on the true equator and equinox of
-// date (Meeus ch. 25, "low accuracy").
+// date (ERFA: the IAU 2006/2000A precession-nutation).
 struct EarthSun {
   double right_ascension = 0;  // radians
   double declination = 0;      // radians
@@ -25,7 +26,10 @@ struct EarthSun {
 EarthSun earth_sun(UtcSeconds utc);
 
 struct SunEphemeris {
-  enum class Model { kNone, kEarth, kMars24, kCircularOrbit };
+  // kEarth: the Earth's own frame (the ITRS, from ERFA), whatever the
+  // body's "rotation"; kMoon: the sun from the Moon's true place, turned by
+  // the body's rotation (the IAU model in the Moon's file).
+  enum class Model { kNone, kEarth, kMoon, kMars24, kCircularOrbit };
   Model model = Model::kNone;
   // kCircularOrbit: the body's heliocentric orbit, circular in the J2000
   // ecliptic.
@@ -44,6 +48,14 @@ SunEphemeris parse_ephemeris(JsonObject ephemeris);
 // a body without an ephemeris.
 glm::dvec3 sun_dir_body(const SunEphemeris& ephemeris, const BodyRotation& rotation,
                         UtcSeconds utc);
+
+// The other body of the Earth-Moon pair in this body's frame, metres from
+// its centre: the Moon for the "earth" model, the Earth for the "moon"
+// model, each where it really is at `utc`; none for other models.
+std::optional<glm::dvec3> companion_pos_body(const SunEphemeris& ephemeris,
+                                             const BodyRotation& rotation, UtcSeconds utc);
+// Its name ("Moon", "Earth"), empty for the other models.
+const char* companion_name(const SunEphemeris& ephemeris);
 
 // Elevation above the local horizon and azimuth clockwise from north of a
 // body-frame direction, seen from geodetic latitude/longitude (radians).

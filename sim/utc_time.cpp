@@ -2,6 +2,7 @@
 
 #include "core/error.h"
 
+#include <erfa.h>
 #include <fmt/format.h>
 
 #include <array>
@@ -96,22 +97,15 @@ std::string format_utc(UtcSeconds utc) {
 double julian_date(UtcSeconds utc) { return 2451545.0 + utc / kSecondsPerDay; }
 
 double tt_minus_utc(UtcSeconds utc) {
-  // Start of each step of TAI - UTC, from 1972-07-01 (11 s) to 2017-01-01
-  // (37 s): IERS Bulletin C. No leap second has been announced since.
-  static constexpr std::array<const char*, 27> kLeapDates = {
-      "1972-07-01", "1973-01-01", "1974-01-01", "1975-01-01", "1976-01-01", "1977-01-01",
-      "1978-01-01", "1979-01-01", "1980-01-01", "1981-07-01", "1982-07-01", "1983-07-01",
-      "1985-07-01", "1988-01-01", "1990-01-01", "1991-01-01", "1992-07-01", "1993-07-01",
-      "1994-07-01", "1996-01-01", "1997-07-01", "1999-01-01", "2006-01-01", "2009-01-01",
-      "2012-07-01", "2015-07-01", "2017-01-01"};
-  static const std::array<UtcSeconds, 27> kLeapUtc = [] {
-    std::array<UtcSeconds, 27> a{};
-    for (size_t i = 0; i < a.size(); ++i) a[i] = parse_utc(kLeapDates[i], "leap second table");
-    return a;
-  }();
-  double tai_minus_utc = 10.0;
-  for (UtcSeconds step : kLeapUtc) {
-    if (utc >= step) tai_minus_utc += 1.0;
+  // TAI - UTC from ERFA's copy of the IERS table (Bulletin C): 10 s in 1972
+  // to 37 s from 2017-01-01, no leap second announced since. Before 1972
+  // UTC's rate was not the SI second's; 10 s serves there.
+  int year = 0, month = 0, day = 0;
+  double fraction = 0, tai_minus_utc = 10.0;
+  if (eraJd2cal(2451545.0, utc / kSecondsPerDay, &year, &month, &day, &fraction) == 0 &&
+      year >= 1972) {
+    // A status of 1 only says the table may be out of date for that year.
+    if (eraDat(year, month, day, fraction, &tai_minus_utc) < 0) tai_minus_utc = 37.0;
   }
   return 32.184 + tai_minus_utc;
 }

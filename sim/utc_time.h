@@ -20,7 +20,7 @@ std::string format_utc(UtcSeconds utc);
 // Julian date of the UTC instant (UT1 is taken as UTC: |UT1 - UTC| < 0.9 s).
 double julian_date(UtcSeconds utc);
 // TT - UTC in seconds: 32.184 s plus the leap seconds (TAI - UTC) in force,
-// from the IERS table (Bulletin C); 10 s before 1972.
+// from ERFA's copy of the IERS table (Bulletin C); 10 s before 1972.
 double tt_minus_utc(UtcSeconds utc);
 
 // The simulation's clock: a UTC epoch and the simulated seconds since it,

@@ -10,6 +10,9 @@ expect "--lat: 91" "${sun[@]}" --lat 91
 expect "--time: '2026-06-21T25:00:00Z'" "$planet" probe sun --lat 0 --lon 0 --time 2026-06-21T25:00:00Z
 expect "--time: 'noon'" "$planet" probe sun --lat 0 --lon 0 --time noon
 expect "vulcan" "$planet" probe sun --planet vulcan --lat 0 --lon 0 --time 2026-06-21T12:00:00Z
+expect "the date: '2024-13-08' has no month 13" "$planet" eclipse 2024-13-08
+expect "the date: '2024-04-08T12:00Z' must be a day (YYYY-MM-DD), not a time" \
+  "$planet" eclipse 2024-04-08T12:00Z
 expect "--lat: 91" "$planet" fly --lat 91
 expect "--height: -7e+06 m is below the ground" "$planet" fly --height -7e6
 expect "--technique: unknown atmosphere technique 'nope'" "$planet" fly --technique nope

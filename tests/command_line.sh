@@ -28,7 +28,7 @@ case "$part" in
 help)
   # The table of techniques, 60 lines, under every command's --help
   # drowned its options.
-  for command in "" capture fly soak probe "probe sun" "probe ground" lab accuracy; do
+  for command in "" capture fly soak probe "probe sun" "probe ground" lab accuracy eclipse; do
     # shellcheck disable=SC2086
     succeed "$planet" $command --help
     lines=$(wc -l < "$work/out.txt")
@@ -42,6 +42,12 @@ help)
   grep -q "planet techniques" "$work/out.txt" || fail "planet --help does not point at planet techniques"
   succeed "$planet" probe --help
   [ "$(wc -l < "$work/out.txt")" -le 20 ] || fail "planet probe --help is over 20 lines"
+  # The eclipse of a day, its figures in a few lines (docs/bodies.md#eclipses).
+  succeed "$planet" eclipse 2024-04-08
+  grep -q "^eclipse  *solar, total" "$work/out.txt" || fail "planet eclipse 2024-04-08 is not total"
+  grep -q "^path width  *197" "$work/out.txt" || fail "planet eclipse 2024-04-08: no 197 km path"
+  succeed "$planet" eclipse 2022-11-08
+  grep -q "^U2  *10:16" "$work/out.txt" || fail "planet eclipse 2022-11-08: no U2 at 10:16"
   succeed "$planet" techniques
   grep -q "Atmosphere techniques:" "$work/out.txt" || fail "planet techniques has no table"
   for t in hillaire raymarch bruneton oneil; do

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# `planet reference` and `planet probe` never create a GL context: on a
+# `planet reference`, `planet probe` and `planet eclipse` never create a GL context: on a
 # machine with no EGL device (glvnd pointed at no vendor library, no
 # display) they still work, while `planet capture` there says it has no EGL;
 # and the CPU test binary, which links every CPU library (sim, the
@@ -33,6 +33,7 @@ run probe sky --planet mars --height 0 --view-zenith 45 --view-azimuth 90 --sun-
 run probe sun --planet earth --lat 48.85 --lon 2.35 --time 2026-06-21T12:00:00Z
 run probe ground --planet earth --lat 46.55 --lon 7.98
 run probe oneil-fit --planet asteroid
+run eclipse 2024-04-08
 
 if linked="$(readelf -d "$cpu_tests" | grep NEEDED | grep -E 'lib(EGL|GL|GLX|OpenGL|epoxy|glfw)\.')"; then
   echo "FAIL: the CPU tests link GL:"; echo "$linked"; exit 1

@@ -266,6 +266,30 @@ TEST_F(FlightTimingTest, ShippedFlightsStayAboveGroundAndShowWhatTheyPromise) {
   EXPECT_GT(end, -19.7);
 }
 
+TEST_F(FlightTimingTest, AClockedFlightSaysWhereTheMoonOrTheEarthIs) {
+  // Over Earth, the Moon; over the Moon, the Earth: each where it really is
+  // at the flight's clock (356 400 to 406 700 km apart, perigee to apogee).
+  auto expect_companion = [](const char* name) {
+    SCOPED_TRACE(name);
+    FlightScript s = load_flight_script(data_dir() / "flights" / (std::string(name) + ".json"),
+                                        terrain_ground());
+    FlightPath path(s);
+    for (double t : {0.0, s.duration()}) {
+      std::optional<glm::dvec3> other = path.companion_pos_at(t);
+      ASSERT_TRUE(other);
+      EXPECT_GT(glm::length(*other), 356.0e6);
+      EXPECT_LT(glm::length(*other), 407.0e6);
+      EXPECT_EQ(*other, *companion_pos_body(s.body.ephemeris, s.body.rotation, path.utc_at(t)));
+    }
+  };
+  expect_companion("earth_orbit_terminator");
+  expect_companion("moon_descent");
+  // A script whose sun is given by hand has no clock, and so no Moon.
+  FlightScript plain = load_flight_script(data_dir() / "flights" / "ascent.json", terrain_ground());
+  ASSERT_FALSE(plain.has_clock);
+  EXPECT_FALSE(FlightPath(plain).companion_pos_at(0.0));
+}
+
 }  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

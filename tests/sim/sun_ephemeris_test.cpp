@@ -58,16 +58,20 @@ HorizonAngles psa(int year, int month, int day, double hours, double lat_deg, do
   return {glm::radians(90.0) - zenith, azimuth};
 }
 
-TEST(SunEphemerisTest, MatchesMeeusExample25a) {
-  // Meeus 1998, example 25.a: 1992 October 13.0 TD, apparent right
-  // ascension 13h13m31.4s and declination -7 deg 47' 06".
+TEST(SunEphemerisTest, MatchesMeeusHighAccuracyExample25b) {
+  // Meeus 1998, example 25.b (the full VSOP87, FK5): 1992 October 13.0 TD,
+  // apparent right ascension 13h13m30.749s, declination -7 deg 47' 01.74",
+  // R = 0.99760775 AU. Meeus's low-accuracy series, which Earth's sun once
+  // came from, is 0.65 s (9.8 arcsec) off in right ascension here.
   UtcSeconds td = parse_utc("1992-10-13T00:00:00Z", "test");
   EarthSun sun = earth_sun(td - tt_minus_utc(td));
   double ra_deg = glm::degrees(sun.right_ascension);
   if (ra_deg < 0) ra_deg += 360.0;
-  EXPECT_NEAR(ra_deg, (13 + 13 / 60.0 + 31.4 / 3600.0) * 15.0, 0.1 * kArcMinuteDeg * 15.0);
-  EXPECT_NEAR(glm::degrees(sun.declination), -(7 + 47 / 60.0 + 6 / 3600.0), 0.1 * kArcMinuteDeg);
-  EXPECT_NEAR(sun.distance_au, 0.99766, 1e-4);
+  constexpr double kArcSecondDeg = 1.0 / 3600.0;
+  EXPECT_NEAR(ra_deg, (13 + 13 / 60.0 + 30.749 / 3600.0) * 15.0, 0.5 * kArcSecondDeg);
+  EXPECT_NEAR(glm::degrees(sun.declination), -(7 + 47 / 60.0 + 1.74 / 3600.0), 0.5 * kArcSecondDeg);
+  // Ours is 7.9e-7 AU (118 km, 0.0002 of the Sun's radius) further.
+  EXPECT_NEAR(sun.distance_au, 0.99760775, 1e-6);
 }
 
 TEST(SunEphemerisTest, EarthTurnsWithGreenwichSiderealTime) {
