@@ -7,7 +7,7 @@
 //
 // Hapke 1981 (JGR 86, 3039), 1984 (Icarus 59, 41) and 1986 (Icarus 67,
 // 264), as gathered in Hapke 1993, "Theory of reflectance and emittance
-// spectroscopy", eqs. 8.89 and 12.46-12.55: the bidirectional reflectance
+// spectroscopy", chapters 8 and 12: the bidirectional reflectance
 //   r = w / (4 pi) mu0e / (mu0e + mue) [(1 + B(g)) P(g) + H(mu0e) H(mue) - 1] S
 // (the radiance over the irradiance on a plane facing the sun; Lambert's
 // is A mu0 / pi), with
@@ -28,7 +28,7 @@ struct RegolithLaw {
   Real theta_bar;  // the mean slope of the roughness below a pixel, radians
 };
 
-// Hapke 2002 (Icarus 157, 523), eq. 13: Chandrasekhar's H function of
+// Hapke 2002 (Icarus 157, 523): Chandrasekhar's H function of
 // isotropic scatterers to within 1 %.
 Real regolith_h(Real w, Real x) {
   x = max(x, Real(1e-6));  // x ln((1 + x) / x) -> 0
@@ -39,7 +39,7 @@ Real regolith_h(Real w, Real x) {
                                         log((Real(1.0) + x) / x)));
 }
 
-// Hapke 1984, eqs. 45-46: the terms of the roughness at an angle x
+// Hapke 1984: the terms of the roughness at an angle x
 // (incidence or emission) for tan(theta_bar) = t; x away from 0, where the
 // cotangent has no limit the exponentials need (they tend to 0).
 Real regolith_e1(Real t, Real x) {
@@ -49,7 +49,7 @@ Real regolith_e2(Real t, Real x) {
   Real c = Real(1.0) / (t * tan(max(x, Real(1e-4))));
   return exp(-c * c / kPi);
 }
-// Hapke 1984, eq. 48 (eta): a cosine's effective value on the rough
+// Hapke 1984 (eta): a cosine's effective value on the rough
 // surface when the other ray lies on the normal.
 Real regolith_eta(Real t, Real chi, Real x) {
   return chi * (cos(x) + sin(x) * t * regolith_e2(t, x) / (Real(2.0) - regolith_e1(t, x)));
@@ -65,7 +65,7 @@ Real regolith_reflectance(RegolithLaw law, Real mu0, Real mu, Real cos_g) {
   mu0 = min(mu0, Real(1.0));
   mu = clamp(mu, Real(1e-4), Real(1.0));
   cos_g = clamp(cos_g, Real(-1.0), Real(1.0));
-  // The opposition surge (Hapke 1986, eq. 8); tan(g / 2) = sin g / (1 + cos g).
+  // The opposition surge (Hapke 1986); tan(g / 2) = sin g / (1 + cos g).
   Real tan_half_g = sqrt(max(Real(1.0) - cos_g, Real(0.0)) / max(Real(1.0) + cos_g, Real(1e-6)));
   Real surge = law.b0 / (Real(1.0) + tan_half_g / law.h);
   Real xi = law.xi;
@@ -73,7 +73,7 @@ Real regolith_reflectance(RegolithLaw law, Real mu0, Real mu, Real cos_g) {
   Real p = (Real(1.0) - xi * xi) / (hg_denom * sqrt(hg_denom));
   Real mu0e = mu0, mue = mu, shadowing = Real(1.0);
   if (law.theta_bar > Real(1e-4)) {
-    // Hapke 1984, eqs. 46-50 (i <= e) and 47-51 (e < i), psi the azimuth
+    // Hapke 1984, for i <= e and for e < i, psi the azimuth
     // between the planes of incidence and emission.
     Real t = tan(law.theta_bar);
     Real chi = Real(1.0) / sqrt(Real(1.0) + kPi * t * t);
