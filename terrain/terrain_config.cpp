@@ -12,6 +12,7 @@
 #include "core/json_reader.h"
 
 #include <fmt/format.h>
+#include <glm/trigonometric.hpp>
 
 #include <cmath>
 #include <cstdio>
@@ -313,6 +314,18 @@ TerrainConfig parse_terrain(const Body& body) {
       c.finish();
     }
     a.finish();
+  }
+  if (root.has("regolith")) {
+    JsonObject o = root.object("regolith");
+    Regolith r;
+    r.w = o.number("w", 0.0, 0.999);
+    r.xi = o.number("xi", -0.95, 0.95);
+    r.b0 = o.number("b0", 0.0, 5.0);
+    r.h = o.number("h", 1e-3, 2.0);
+    r.theta_bar = glm::radians(o.number("theta_bar_deg", 0.0, 60.0));
+    r.source = o.string("source");
+    o.finish();
+    config.regolith = r;
   }
   root.finish();
   return config;

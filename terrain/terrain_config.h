@@ -2,6 +2,7 @@
 // The "terrain" object of a body's file: where heights come from, the
 // surface palette and the quadtree's depth.
 #include "terrain/height_source.h"
+#include "terrain/regolith.h"
 #include "terrain/surface_color.h"
 #include "terrain/surface_maps.h"
 
@@ -19,6 +20,9 @@ struct TerrainConfig {
   // Day and night imagery, where the body's file names it and its files
   // are installed; none otherwise (the palette alone then).
   std::shared_ptr<const SurfaceMaps> maps;
+  // How the ground reflects sunlight where the body's file says it is
+  // regolith (terrain/regolith.h); Lambert's law where it says nothing.
+  std::optional<Regolith> regolith;
 };
 
 // Reads body.terrain; a body without one gets a smooth ellipsoid (zero

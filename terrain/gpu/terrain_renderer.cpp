@@ -165,6 +165,17 @@ void TerrainRenderer::set_uniforms(const Program& program, const Camera& camera,
     glUniform1f(program.uniform("u_map_texel_m"),
                 float(glm::pi<double>() * surface_->shape().equatorial_radius / maps->height()));
   }
+  // Regolith's law for the sun's light (terrain.frag's regolith_sun_term),
+  // where the body's file gives one; Lambert's elsewhere.
+  const std::optional<Regolith>& regolith = surface_->config().regolith;
+  glUniform1i(program.uniform("u_regolith"), regolith ? 1 : 0);
+  if (regolith) {
+    glUniform4f(program.uniform("u_regolith_law"), float(regolith->w), float(regolith->xi),
+                float(regolith->b0), float(regolith->h));
+    glUniform1f(program.uniform("u_regolith_theta_bar"), float(regolith->theta_bar));
+    glUniform1f(program.uniform("u_regolith_normal_albedo"),
+                float(regolith_normal_albedo(*regolith)));
+  }
 }
 
 void TerrainRenderer::draw_tiles(

@@ -143,7 +143,9 @@ TEST(AirlessFrameGLTest, TheMoonRunsNoAtmospherePass) {
     return 0.2126f * p[0] + 0.7152f * p[1] + 0.0722f * p[2];
   };
   EXPECT_EQ(luminance(width / 2, height - 1), 0.0f);
-  EXPECT_GT(luminance(width / 2, 0), 0.01f);
+  // The ground's regolith seen at a phase angle of 110 deg returns a
+  // quarter of what Lambert's law did (0.0036 where it gave 0.014).
+  EXPECT_GT(luminance(width / 2, 0), 0.002f);
 }
 
 // With every option on, the frame's own passes run in the graph's order

@@ -5,6 +5,7 @@
 // lies between (aerial perspective) and dims this by the air's
 // transmittance, lights included.
 #include "atmosphere/shaders/surface_lighting.glsl"
+#include "terrain/shaders/regolith.glsl"
 
 in vec3 v_normal_body;
 in vec4 v_albedo;  // alpha: tile_mesh.cpp's pack_albedo
@@ -14,6 +15,7 @@ in float v_over_sea;
 in vec3 v_sun_transmittance;
 in vec3 v_sky_irradiance;
 in float v_sun_over_horizon;
+in vec3 v_rel_eye;
 layout(location = 0) out vec4 o_radiance;
 // How far the ground lies below the datum, metres (0 where it does not):
 // the air in front of it goes down to it (sky_pixel.glsl). A drawn sea
@@ -40,6 +42,12 @@ uniform float u_map_texel_m;    // a pixel of the images on the ground, metres
 uniform int u_has_sea;
 uniform int u_over_datum;       // 1: v_over_sea is the height over the datum (no sea)
 uniform vec3 u_ocean_albedo;    // the palette's open sea
+// Regolith's law (terrain/regolith.h), where u_regolith is 1: w, xi, b0,
+// h; the roughness's mean slope; the law's normal albedo.
+uniform int u_regolith;
+uniform vec4 u_regolith_law;
+uniform float u_regolith_theta_bar;
+uniform float u_regolith_normal_albedo;
 
 // Longitude and geodetic latitude as the images' coordinates.
 vec2 map_uv(vec3 p) {
@@ -57,12 +65,25 @@ vec3 day_albedo(vec3 c) {
   return mix(a, 0.85 * c, white);
 }
 
+// The sun's term for ground that reflects as regolith, in the place of
+// Lambert's cos(i): pi r / A_n, so that the palette's albedo (the normal
+// albedo A, regolith.h) over pi times it is A / A_n times Hapke's r.
+float regolith_sun_term(vec3 n) {
+  RegolithLaw law = RegolithLaw(u_regolith_law.x, u_regolith_law.y, u_regolith_law.z,
+                                u_regolith_law.w, u_regolith_theta_bar);
+  vec3 to_eye = -normalize(v_rel_eye);
+  float r = regolith_reflectance(law, dot(n, u_sun_dir_body), dot(n, to_eye),
+                                 dot(u_sun_dir_body, to_eye));
+  return kPi * r / u_regolith_normal_albedo;
+}
+
 void main() {
   vec3 n = normalize(v_normal_body);
   // The share of the sun's disc above the horizon: interpolated per
   // fragment, the shadow's edge falls between vertices.
   float sun_visible = smoothstep(-u_penumbra, u_penumbra, v_sun_over_horizon);
   float cos_sun = max(dot(n, u_sun_dir_body), 0.0) * sun_visible;
+  if (u_regolith != 0) cos_sun = regolith_sun_term(n) * sun_visible;
   // Multisampled, a pixel whose centre lies outside a triangle that covers
   // some of its samples takes the values extrapolated to its centre, far
   // outside the triangle's own where it is seen edge-on (a smooth slope's
