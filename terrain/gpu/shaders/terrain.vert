@@ -32,6 +32,7 @@ out vec3 v_normal_body;
 out vec4 v_albedo;  // alpha: tile_mesh.cpp's pack_albedo
 out vec3 v_position_body;
 out float v_eye_distance;
+out vec3 v_rel_eye;  // from the eye to the vertex, body frame: the sea's view direction
 out float v_over_sea;  // metres: negative at sea (over the datum where there is none)
 out vec3 v_sun_transmittance;
 out vec3 v_sky_irradiance;  // per unit solar irradiance
@@ -76,6 +77,7 @@ void main() {
   v_albedo = a_albedo;
   v_position_body = u_center_body + a_offset;
   v_eye_distance = d;
+  v_rel_eye = rel_eye;
   v_over_sea = a_sea.x + morph * a_sea.y;
 #ifndef TERRAIN_COVERAGE  // the coverage pass (terrain_coverage.frag) takes no light
   v_sun_over_horizon = u_shadows != 0 ? sun_over_horizon(u_center_body + a_offset) : kHalfPi;
