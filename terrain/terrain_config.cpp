@@ -280,6 +280,14 @@ TerrainConfig parse_terrain(const Body& body) {
   }
   JsonObject heights = root.object("height");
   config.heights = parse_heights(heights, body, config.sea_level, config.maps);
+  if (root.has("sea")) {
+    JsonObject sea = root.object("sea");
+    // Cox and Munk's fit of the slopes to the wind rests on winds of up to
+    // 14 m/s; past 15 the sea breaks into foam that it does not model.
+    config.sea_wind = sea.number("wind_m_s", 0.0, 15.0);
+    (void)sea.string_or("about", "");  // for people
+    sea.finish();
+  }
   if (root.has("albedo")) {
     JsonObject a = root.object("albedo");
     SurfacePalette& p = config.palette;

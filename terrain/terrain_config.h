@@ -17,6 +17,10 @@ struct TerrainConfig {
   SurfacePalette palette;
   int max_level = 20;             // deepest quadtree level
   std::optional<double> sea_level;  // open sea at this height, if any
+  // The wind over the open sea, 12.5 m above it, m/s: the width of the
+  // sun's glint (terrain/shaders/sea_brdf.glsl). The "sea" object's
+  // "wind_m_s"; 7 m/s, about the oceans' mean, where the file has none.
+  double sea_wind = 7.0;
   // Day and night imagery, where the body's file names it and its files
   // are installed; none otherwise (the palette alone then).
   std::shared_ptr<const SurfaceMaps> maps;

@@ -1,5 +1,7 @@
 #include "terrain/gpu/terrain_renderer.h"
 
+#include "terrain/sea_brdf.h"
+
 #include "core/error.h"
 #include "gl/context.h"
 
@@ -150,7 +152,17 @@ void TerrainRenderer::set_uniforms(const Program& program, const Camera& camera,
   const SurfacePalette& palette = surface_->config().palette;
   const bool has_sea = surface_->config().sea_level && palette.ocean;
   glUniform1i(program.uniform("u_has_sea"), has_sea ? 1 : 0);
-  if (has_sea) glUniform3fv(program.uniform("u_ocean_albedo"), 1, glm::value_ptr(*palette.ocean));
+  if (has_sea) {
+    glUniform3fv(program.uniform("u_ocean_albedo"), 1, glm::value_ptr(*palette.ocean));
+    glUniform1f(program.uniform("u_sea_slope_variance"),
+                float(sea::cox_munk_slope_variance(surface_->config().sea_wind)));
+    // The sea's normal is the ellipsoid's (terrain.frag's sea_radiance).
+    const double f = surface_->shape().flattening;
+    glUniform1f(program.uniform("u_geodetic_k"), float((1.0 - f) * (1.0 - f)));
+    glUniform3fv(program.uniform("u_camera_body"), 1, glm::value_ptr(glm::vec3(camera.pos_body)));
+    glUniform1f(program.uniform("u_sea_radius"),
+                float(surface_->shape().equatorial_radius + *surface_->config().sea_level));
+  }
   glUniform1i(program.uniform("u_has_day_map"), day_map_.id() != 0 ? 1 : 0);
   glUniform1i(program.uniform("u_has_night_map"), night_map_.id() != 0 ? 1 : 0);
   if (maps) {

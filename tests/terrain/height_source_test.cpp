@@ -6,6 +6,7 @@
 #include "core/error.h"
 
 #include <OpenImageIO/imageio.h>
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 #include <glm/gtc/constants.hpp>
 
@@ -115,6 +116,33 @@ TEST(TerrainConfigTest, ErrorsNameTheBodyFileAndField) {
     FAIL() << "missing height map accepted";
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("/nonexistent/heights.exr"), std::string::npos);
+  }
+}
+
+// The wind that shapes the sea's glint: Cox and Munk's fit holds to
+// 15 m/s; beyond, one error naming the file and the key.
+TEST(TerrainConfigTest, SeaWindIsReadAndOutOfRangeNamesFileAndKey) {
+  Body body;
+  body.name = "Test";
+  body.file = "bodies/test.json";
+  body.shape.equatorial_radius = 1e6;
+  const char* heights = R"("height": {"type": "procedural", "layers": [], "sea_level_m": 0})";
+  body.terrain =
+      nlohmann::json::parse(fmt::format(R"({{{}, "sea": {{"wind_m_s": 2.5}}}})", heights));
+  EXPECT_EQ(parse_terrain(body).sea_wind, 2.5);
+  body.terrain = nlohmann::json::parse(fmt::format("{{{}}}", heights));
+  EXPECT_EQ(parse_terrain(body).sea_wind, 7.0);
+  for (const char* wind : {"-1", "40", "\"calm\""}) {
+    body.terrain =
+        nlohmann::json::parse(fmt::format(R"({{{}, "sea": {{"wind_m_s": {}}}}})", heights, wind));
+    try {
+      parse_terrain(body);
+      FAIL() << "wind " << wind << " accepted";
+    } catch (const InputError& e) {
+      std::string m = e.what();
+      EXPECT_NE(m.find("bodies/test.json"), std::string::npos) << m;
+      EXPECT_NE(m.find("wind_m_s"), std::string::npos) << m;
+    }
   }
 }
 

@@ -1,11 +1,13 @@
-// Lambertian terrain lit by the sun through the atmosphere, where the
-// terrain's horizon does not hide it, plus the sky's ambient, plus the
-// lights of the night side where the body has a map of them: the radiance
-// leaving the ground toward the camera. The atmosphere pass adds what
-// lies between (aerial perspective) and dims this by the air's
-// transmittance, lights included.
+// Terrain lit by the sun through the atmosphere (Lambert's law; Hapke's
+// where the body has regolith; Fresnel and the sun's glint on the open
+// sea), where the terrain's horizon does not hide it, plus the sky's
+// ambient, plus the lights of the night side where the body has a map of
+// them: the radiance leaving the ground toward the camera. The atmosphere
+// pass adds what lies between (aerial perspective) and dims this by the
+// air's transmittance, lights included.
 #include "atmosphere/shaders/surface_lighting.glsl"
 #include "terrain/shaders/regolith.glsl"
+#include "terrain/shaders/sea_brdf.glsl"
 
 in vec3 v_normal_body;
 in vec4 v_albedo;  // alpha: tile_mesh.cpp's pack_albedo
@@ -41,7 +43,10 @@ uniform float u_night_radiance; // of a white night pixel, W m^-2 sr^-1 nm^-1
 uniform float u_map_texel_m;    // a pixel of the images on the ground, metres
 uniform int u_has_sea;
 uniform int u_over_datum;       // 1: v_over_sea is the height over the datum (no sea)
-uniform vec3 u_ocean_albedo;    // the palette's open sea
+uniform vec3 u_ocean_albedo;    // the palette's open sea: the light from below its surface
+uniform float u_sea_slope_variance;  // Cox and Munk's sigma^2 for the body's wind
+uniform vec3 u_camera_body;         // float: the sea's point to 0.5 m, its normal to 1e-7
+uniform float u_sea_radius;          // the datum's equatorial radius plus the sea's level, metres
 // Regolith's law (terrain/regolith.h), where u_regolith is 1: w, xi, b0,
 // h; the roughness's mean slope; the law's normal albedo.
 uniform int u_regolith;
@@ -77,6 +82,34 @@ float regolith_sun_term(vec3 n) {
   return kPi * r / u_regolith_normal_albedo;
 }
 
+// The radiance the open sea sends toward the eye (sea_brdf.glsl): the
+// light from below its surface (the palette's or the image's water
+// albedo, lit as the ground is, by `irradiance`) through the share the
+// surface lets out, 1 - Fresnel; the sky it mirrors, Fresnel times the
+// sky's mean radiance (its irradiance `sky` over pi: the technique's own
+// sky, but not yet its radiance in the mirrored direction); and the
+// sun's glint.
+vec3 sea_radiance(vec3 water_albedo, vec3 irradiance, vec3 sky, vec3 sun_transmittance,
+                  float sun_visible) {
+  // The mean surface is the datum's ellipsoid, which the tile's flat
+  // facets cut below: the view ray meets it nearer than the fragment, by
+  // what the facet sags over the ray's steepness (to first order). At a
+  // grazing view from 400 km the facet's own normal tilted the glint's
+  // tail by 2.5 %.
+  vec3 view = -normalize(v_rel_eye);
+  // The point drawn, morph included (v_position_body leaves it out).
+  vec3 p = u_camera_body + v_rel_eye;
+  vec3 up = normalize(p);
+  float datum = u_sea_radius / length(vec3(up.xy, up.z / sqrt(u_geodetic_k)));
+  p += view * ((datum - length(p)) / max(dot(up, view), 0.05));
+  vec3 n = normalize(vec3(p.xy, p.z / u_geodetic_k));
+  float fresnel = sea_fresnel(dot(n, view));
+  vec3 glint = u_sun_irradiance * sun_transmittance *
+               (sun_visible * sea_glint(n, view, u_sun_dir_body, u_sea_slope_variance));
+  return (1.0 - fresnel) * water_albedo / kPi * irradiance +
+         fresnel * u_sun_irradiance * sky / kPi + glint;
+}
+
 void main() {
   vec3 n = normalize(v_normal_body);
   // The share of the sun's disc above the horizon: interpolated per
@@ -96,6 +129,10 @@ void main() {
 
   vec3 ground_albedo = clamp(v_albedo.rgb, 0.0, 1.0);
   vec3 albedo = ground_albedo;
+  // The shares of land and of open water in the pixel, and their albedos.
+  vec3 land_albedo = ground_albedo;
+  vec3 water_albedo = u_ocean_albedo;
+  float water = 0.0;
   // The sea where the ground's height over it, interpolated over the
   // triangle, is negative: the coastline crosses triangles along a line
   // that the next finer tiles only refine, its edge a pixel wide.
@@ -104,6 +141,7 @@ void main() {
     float edge = max(fwidth(v_over_sea), 1e-3);
     sea = 1.0 - smoothstep(-0.5 * edge, 0.5 * edge, v_over_sea);
     albedo = mix(albedo, u_ocean_albedo, sea);
+    water = sea;
   }
   vec3 emitted = vec3(0.0);
   // The mipmap level from the fragment's footprint on the ground: the
@@ -132,13 +170,18 @@ void main() {
     // heights follow its mask only within its 20 km pixels), with rock and
     // snow as the palette has them.
     float land_cover = clamp(2.0 * v_albedo.a - 1.0, 0.0, 1.0);
-    vec3 land_albedo = mix(ground_albedo, image, land_cover * fade);
-    vec3 water_albedo = mix(u_ocean_albedo, image, 1.0 - land);
+    land_albedo = mix(ground_albedo, image, land_cover * fade);
+    water_albedo = mix(u_ocean_albedo, image, 1.0 - land);
+    water = u_has_sea != 0 ? mix(sea, 1.0 - land, fade) : 0.0;
     albedo = mix(land_albedo, water_albedo, mix(sea, 1.0 - land, fade));
     if (lights_on > 0.0) {
       emitted = lights_on * u_night_radiance * textureLod(u_night_map, uv, lod).rgb;
     }
   }
   o_radiance = vec4(albedo / kPi * irradiance + emitted, 1.0);
+  if (water > 0.0) {
+    vec3 sea_surface = sea_radiance(water_albedo, irradiance, sky, transmittance, sun_visible);
+    o_radiance.rgb = mix(land_albedo / kPi * irradiance, sea_surface, water) + emitted;
+  }
   o_ground_below = u_over_datum != 0 ? min(v_over_sea, 0.0) : 0.0;
 }

@@ -36,7 +36,7 @@ out float v_over_sea;  // metres: negative at sea (over the datum where there is
 out vec3 v_sun_transmittance;
 out vec3 v_sky_irradiance;  // per unit solar irradiance
 out float v_sun_over_horizon;  // the sun's elevation minus the horizon's in its azimuth, radians
-out vec3 v_rel_eye;  // the vertex less the eye, body frame: the way it is seen
+out vec3 v_rel_eye;  // the vertex less the eye, body frame: the way it is seen (regolith, sea)
 
 const float kHalfPi = 1.5707963;
 
@@ -77,9 +77,9 @@ void main() {
   v_albedo = a_albedo;
   v_position_body = u_center_body + a_offset;
   v_eye_distance = d;
+  v_rel_eye = rel_eye;
   v_over_sea = a_sea.x + morph * a_sea.y;
 #ifndef TERRAIN_COVERAGE  // the coverage pass (terrain_coverage.frag) takes no light
-  v_rel_eye = rel_eye;
   v_sun_over_horizon = u_shadows != 0 ? sun_over_horizon(u_center_body + a_offset) : kHalfPi;
   v_sun_transmittance = vec3(1.0);
   v_sky_irradiance = vec3(0.0);
