@@ -137,21 +137,8 @@ void read_attitude(JsonObject& k, const FlightScript& s, const Geodesy& geodesy,
   }
 }
 
-}  // namespace
-
-FlightScript load_flight_script(const std::filesystem::path& file, const GroundHeight& ground) {
-  JsonObject root = JsonObject::load(file);
-  FlightScript s;
-  s.file = file;
-  s.name = file.stem().string();
-
-  std::string body_name = root.string("body");
-  try {
-    s.body = load_body(find_body_file(body_name));
-  } catch (const InputError& e) {
-    root.fail("body", e.what());
-  }
-
+// The "image" object: the frame's size and what it draws.
+void read_image(JsonObject& root, FlightScript& s) {
   JsonObject image = root.object("image");
   s.width = image.integer("width", 1, 16384);
   s.height = image.integer("height", 1, 16384);
@@ -164,7 +151,10 @@ FlightScript load_flight_script(const std::filesystem::path& file, const GroundH
   s.stars = image.boolean_or("stars", true);
   s.glare = image.boolean_or("glare", false);
   image.finish();
+}
 
+// The frame rate, the exposure, the field of view and who chooses the sky.
+void read_rendering(JsonObject& root, FlightScript& s) {
   s.frame_rate = root.number("frame_rate", 1e-3, 1000.0);
   if (s.frame_rate <= 0) root.fail("frame_rate", "must be positive");
   s.auto_exposure = root.has("exposure") && root.raw("exposure").is_string();
@@ -195,8 +185,10 @@ FlightScript load_flight_script(const std::filesystem::path& file, const GroundH
     s.error_budget_percent = pct;
   }
   s.allow_below_ground = root.boolean_or("allow_below_ground", false);
+}
 
-  // The sun: by the clock and the body's ephemeris, or fixed by hand.
+// The sun: by the clock and the body's ephemeris, or fixed by hand.
+void read_sun(JsonObject& root, FlightScript& s) {
   if (root.has("start_utc") == root.has("sun")) {
     root.fail(
         "give either \"start_utc\" (the sun from the body's ephemeris) or \"sun\" "
@@ -204,7 +196,7 @@ FlightScript load_flight_script(const std::filesystem::path& file, const GroundH
   }
   if (root.has("start_utc")) {
     s.has_clock = true;
-    s.start_utc = parse_utc(root.string("start_utc"), file.string() + ": start_utc");
+    s.start_utc = parse_utc(root.string("start_utc"), s.file.string() + ": start_utc");
     if (!s.body.ephemeris.available()) {
       root.fail("start_utc", s.body.name + " has no ephemeris; give the \"sun\" by hand instead");
     }
@@ -214,6 +206,56 @@ FlightScript load_flight_script(const std::filesystem::path& file, const GroundH
     s.sun_azimuth = glm::radians(sun.number("azimuth_deg", -360.0, 360.0));
     sun.finish();
   }
+}
+
+// A keyframe's clock: set there, or running on from the previous keyframe's.
+void read_clock(JsonObject& k, const FlightScript& s, size_t i, Keyframe& f) {
+  if (k.has("utc") || k.has("clock_s")) {
+    if (!s.has_clock) k.fail("the clock needs \"start_utc\" at the top of the script");
+    if (k.has("utc") && k.has("clock_s")) k.fail("give \"utc\" or \"clock_s\", not both");
+    f.utc = k.has("utc") ? parse_utc(k.string("utc"), k.file() + ": " + k.path() + ".utc")
+                         : s.start_utc + k.number("clock_s", -1e12, 1e12);
+  } else {
+    f.utc = i == 0 ? s.start_utc : s.keyframes.back().utc + (f.time - s.keyframes.back().time);
+  }
+}
+
+// A keyframe's orbit, which carries the camera to the next keyframe.
+void read_orbit(JsonObject& k, const FlightScript& s, bool last, Keyframe& f) {
+  if (last) k.fail("orbit", "needs a keyframe after it where the orbit ends");
+  JsonObject o = k.object("orbit");
+  double inclination = glm::radians(o.number("inclination_deg", 0.0, 180.0));
+  bool northbound = o.string_or("direction", "north") != "south";
+  if (o.has("direction") && o.string("direction") != "north" && o.string("direction") != "south") {
+    o.fail("direction", "must be \"north\" or \"south\"");
+  }
+  o.finish();
+  if (!s.has_clock) k.fail("orbit", "needs \"start_utc\": the body turns under an orbit");
+  try {
+    f.orbit = circular_orbit_over(s.body, f.place, inclination, northbound, f.utc);
+  } catch (const InputError& e) {
+    k.fail("orbit", e.what());
+  }
+}
+
+}  // namespace
+
+FlightScript load_flight_script(const std::filesystem::path& file, const GroundHeight& ground) {
+  JsonObject root = JsonObject::load(file);
+  FlightScript s;
+  s.file = file;
+  s.name = file.stem().string();
+
+  std::string body_name = root.string("body");
+  try {
+    s.body = load_body(find_body_file(body_name));
+  } catch (const InputError& e) {
+    root.fail("body", e.what());
+  }
+
+  read_image(root, s);
+  read_rendering(root, s);
+  read_sun(root, s);
 
   Geodesy geodesy(s.body.shape);
   auto keys = root.objects("keyframes");
@@ -235,33 +277,11 @@ FlightScript load_flight_script(const std::filesystem::path& file, const GroundH
       k.fail("time", fmt::format("{:g} does not come after the previous keyframe's {:g}", f.time,
                                  s.keyframes.back().time));
     }
-    // The clock: set here, or running on from the previous keyframe.
-    if (k.has("utc") || k.has("clock_s")) {
-      if (!s.has_clock) k.fail("the clock needs \"start_utc\" at the top of the script");
-      if (k.has("utc") && k.has("clock_s")) k.fail("give \"utc\" or \"clock_s\", not both");
-      f.utc = k.has("utc") ? parse_utc(k.string("utc"), k.file() + ": " + k.path() + ".utc")
-                           : s.start_utc + k.number("clock_s", -1e12, 1e12);
-    } else {
-      f.utc = i == 0 ? s.start_utc : s.keyframes.back().utc + (f.time - s.keyframes.back().time);
-    }
+    read_clock(k, s, i, f);
     read_position(k, s, geodesy, ground, min_height, orbit_before, f);
     orbit_before = false;
     if (k.has("orbit")) {
-      if (i + 1 == keys.size()) k.fail("orbit", "needs a keyframe after it where the orbit ends");
-      JsonObject o = k.object("orbit");
-      double inclination = glm::radians(o.number("inclination_deg", 0.0, 180.0));
-      bool northbound = o.string_or("direction", "north") != "south";
-      if (o.has("direction") && o.string("direction") != "north" &&
-          o.string("direction") != "south") {
-        o.fail("direction", "must be \"north\" or \"south\"");
-      }
-      o.finish();
-      if (!s.has_clock) k.fail("orbit", "needs \"start_utc\": the body turns under an orbit");
-      try {
-        f.orbit = circular_orbit_over(s.body, f.place, inclination, northbound, f.utc);
-      } catch (const InputError& e) {
-        k.fail("orbit", e.what());
-      }
+      read_orbit(k, s, i + 1 == keys.size(), f);
       orbit_before = true;
     }
     read_attitude(k, s, geodesy, ground, min_height, f);
