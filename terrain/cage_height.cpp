@@ -106,6 +106,100 @@ double angle_between(const glm::dvec3& p, const glm::dvec3& q) {
   return std::atan2(glm::length(glm::cross(p, q)), glm::dot(p, q));
 }
 
+double& table_cell(std::vector<double>& table, int face, int i, int j) {
+  return table[size_t((face * (kN + 1) + j) * (kN + 1) + i)];
+}
+
+// How far the flat faces of the refined mesh stray from the limit surface:
+// each face of the level before the last splits into four, and its centre's
+// limit point against the bilinear centre of its corners' limit points is
+// that level's sag. Sag shrinks with the square of the face size, so the
+// last level's is a quarter of it; half is taken for margin.
+double refinement_sag(const Far::TopologyLevel& before, const std::vector<Point>& limit) {
+  double sag = 0;
+  for (int f = 0; f < before.GetNumFaces(); ++f) {
+    auto fv = before.GetFaceVertices(f);
+    glm::dvec3 mid(0.0);
+    for (int k = 0; k < fv.size(); ++k) mid += limit[size_t(before.GetVertexChildVertex(fv[k]))].p;
+    mid /= double(fv.size());
+    sag = std::max(sag, glm::length(limit[size_t(before.GetFaceChildVertex(f))].p - mid));
+  }
+  return sag / 2.0;
+}
+
+// Rays from the centre through every grid direction, against one triangle
+// of the refined mesh; each grid point keeps its outermost crossing. A
+// triangle wholly in front of a face's plane projects to a triangle there
+// (the gnomonic projection keeps straight lines), which bounds the grid
+// points it can cover.
+void cast_rays_at_triangle(std::vector<double>& table, const glm::dvec3& p0, const glm::dvec3& p1,
+                           const glm::dvec3& p2) {
+  for (int face = 0; face < 6; ++face) {
+    int a = face / 2, b = (a + 1) % 3, c = (a + 2) % 3;
+    double s = face % 2 ? -1.0 : 1.0;
+    if (s * p0[a] <= 0 || s * p1[a] <= 0 || s * p2[a] <= 0) continue;
+    double u_lo = 1e300, u_hi = -1e300, v_lo = 1e300, v_hi = -1e300;
+    for (const glm::dvec3* p : {&p0, &p1, &p2}) {
+      double u = (*p)[b] / (s * (*p)[a]), v = (*p)[c] / (s * (*p)[a]);
+      u_lo = std::min(u_lo, u), u_hi = std::max(u_hi, u);
+      v_lo = std::min(v_lo, v), v_hi = std::max(v_hi, v);
+    }
+    // A triangle that grazes the face's plane projects to coordinates of
+    // any size (1e18 for the cube's limit): clamped to the grid before
+    // they become ints, which cannot hold them (UBSan's finding).
+    auto grid = [](double x) { return std::clamp((x + 1.0) * kN / 2.0, -1.0, kN + 1.0); };
+    auto first = [&](double x) { return std::max(0, int(std::ceil(grid(x) - 1e-6))); };
+    auto end = [&](double x) { return std::min(kN, int(std::floor(grid(x) + 1e-6))); };
+    glm::dvec3 e1 = p1 - p0, e2 = p2 - p0;
+    for (int j = first(v_lo); j <= end(v_hi); ++j) {
+      for (int i = first(u_lo); i <= end(u_hi); ++i) {
+        // Moller and Trumbore 1997: the ray t q against p0 + s e1 + t e2,
+        // with a small tolerance so that no ray slips between triangles.
+        glm::dvec3 q = grid_direction(face, i, j);
+        glm::dvec3 pv = glm::cross(q, e2);
+        double det = glm::dot(e1, pv);
+        if (std::abs(det) < 1e-300) continue;
+        glm::dvec3 tv = -p0;
+        double bu = glm::dot(tv, pv) / det;
+        glm::dvec3 qv = glm::cross(tv, e1);
+        double bv = glm::dot(q, qv) / det;
+        constexpr double kTol = 1e-7;
+        if (bu < -kTol || bv < -kTol || bu + bv > 1.0 + kTol) continue;
+        double t = glm::dot(e2, qv) / det;
+        if (t <= 0) continue;
+        double& r = table_cell(table, face, i, j);
+        r = std::max(r, t * glm::length(q));  // the outermost crossing
+      }
+    }
+  }
+}
+
+// Mean radius over the sphere of directions, each grid point weighted by its
+// solid angle, du dv / (1 + u^2 + v^2)^(3/2) for the gnomonic map. A grid
+// point no ray reached means the cage is not star-shaped about its centre.
+double mean_radius(std::vector<double>& table, const std::string& name, bool about_origin) {
+  double sum = 0, weight = 0;
+  for (int face = 0; face < 6; ++face) {
+    for (int j = 0; j <= kN; ++j) {
+      for (int i = 0; i <= kN; ++i) {
+        double r = table_cell(table, face, i, j);
+        if (r <= 0) {
+          glm::dvec3 q = glm::normalize(grid_direction(face, i, j));
+          throw InputError(fmt::format(
+              "{}: the {} lies outside the cage's limit surface (the ray towards "
+              "({:.3f}, {:.3f}, {:.3f}) meets no surface); the cage must be star-shaped about it",
+              name, about_origin ? "origin" : "centroid", q.x, q.y, q.z));
+        }
+        double l = glm::length(grid_direction(face, i, j));
+        double w = 1.0 / (l * l * l);
+        sum += w * r;
+        weight += w;
+      }
+    }
+  }
+  return sum / weight;
+}
+
 }  // namespace
 
 std::vector<glm::dvec3> cage_limit_points(const ObjCage& cage, int level, const std::string& name) {
@@ -124,8 +218,6 @@ CageHeight::CageHeight(const ObjCage& cage, const std::string& name, double body
   while (level < 6 && double(cage.face_sizes.size()) * std::pow(4.0, level) < 5e4) ++level;
   auto refiner = make_refiner(cage, level, name);
   std::vector<Point> limit = limit_of(*refiner, cage);
-  const Far::TopologyLevel& last = refiner->GetLevel(level);
-  const Far::TopologyLevel& before = refiner->GetLevel(level - 1);
 
   // A measured model's origin is its body's centre of mass, on the spin
   // axis; the limit points' centroid is not (Eros's 7790-plate model's
@@ -137,103 +229,41 @@ CageHeight::CageHeight(const ObjCage& cage, const std::string& name, double body
     centre /= double(limit.size());
   }
 
-  // How far the flat faces of the refined mesh stray from the limit
-  // surface: each face of the level before splits into four, and its
-  // centre's limit point against the bilinear centre of its corners' limit
-  // points is that level's sag. Sag shrinks with the square of the face
-  // size, so the last level's is a quarter of it; take half for margin.
-  double sag = 0;
-  for (int f = 0; f < before.GetNumFaces(); ++f) {
-    auto fv = before.GetFaceVertices(f);
-    glm::dvec3 mid(0.0);
-    for (int k = 0; k < fv.size(); ++k) mid += limit[size_t(before.GetVertexChildVertex(fv[k]))].p;
-    mid /= double(fv.size());
-    sag = std::max(sag, glm::length(limit[size_t(before.GetFaceChildVertex(f))].p - mid));
-  }
-  double chord_error = sag / 2.0;
-
-  // Rays from the centre through every grid direction, against the
-  // triangles of the refined mesh. A triangle wholly in front of a face's
-  // plane projects to a triangle there (the gnomonic projection keeps
-  // straight lines), which bounds the grid points it can cover.
+  double chord_error = refinement_sag(refiner->GetLevel(level - 1), limit);
   table_.assign(size_t(6 * (kN + 1) * (kN + 1)), -1.0);
-  auto hit_triangle = [&](const glm::dvec3& p0, const glm::dvec3& p1, const glm::dvec3& p2) {
-    for (int face = 0; face < 6; ++face) {
-      int a = face / 2, b = (a + 1) % 3, c = (a + 2) % 3;
-      double s = face % 2 ? -1.0 : 1.0;
-      if (s * p0[a] <= 0 || s * p1[a] <= 0 || s * p2[a] <= 0) continue;
-      double u_lo = 1e300, u_hi = -1e300, v_lo = 1e300, v_hi = -1e300;
-      for (const glm::dvec3* p : {&p0, &p1, &p2}) {
-        double u = (*p)[b] / (s * (*p)[a]), v = (*p)[c] / (s * (*p)[a]);
-        u_lo = std::min(u_lo, u), u_hi = std::max(u_hi, u);
-        v_lo = std::min(v_lo, v), v_hi = std::max(v_hi, v);
-      }
-      // A triangle that grazes the face's plane projects to coordinates of
-      // any size (1e18 for the cube's limit): clamped to the grid before
-      // they become ints, which cannot hold them (UBSan's finding).
-      auto grid = [](double x) { return std::clamp((x + 1.0) * kN / 2.0, -1.0, kN + 1.0); };
-      auto first = [&](double x) { return std::max(0, int(std::ceil(grid(x) - 1e-6))); };
-      auto end = [&](double x) { return std::min(kN, int(std::floor(grid(x) + 1e-6))); };
-      glm::dvec3 e1 = p1 - p0, e2 = p2 - p0;
-      for (int j = first(v_lo); j <= end(v_hi); ++j) {
-        for (int i = first(u_lo); i <= end(u_hi); ++i) {
-          // Moller and Trumbore 1997: the ray t q against p0 + s e1 + t e2,
-          // with a small tolerance so that no ray slips between triangles.
-          glm::dvec3 q = grid_direction(face, i, j);
-          glm::dvec3 pv = glm::cross(q, e2);
-          double det = glm::dot(e1, pv);
-          if (std::abs(det) < 1e-300) continue;
-          glm::dvec3 tv = -p0;
-          double bu = glm::dot(tv, pv) / det;
-          glm::dvec3 qv = glm::cross(tv, e1);
-          double bv = glm::dot(q, qv) / det;
-          constexpr double kTol = 1e-7;
-          if (bu < -kTol || bv < -kTol || bu + bv > 1.0 + kTol) continue;
-          double t = glm::dot(e2, qv) / det;
-          if (t <= 0) continue;
-          double& r = cell(face, i, j);
-          r = std::max(r, t * glm::length(q));  // the outermost crossing
-        }
-      }
-    }
-  };
+  const Far::TopologyLevel& last = refiner->GetLevel(level);
   for (int f = 0; f < last.GetNumFaces(); ++f) {
     auto fv = last.GetFaceVertices(f);
     glm::dvec3 p0 = limit[size_t(fv[0])].p - centre;
     for (int k = 1; k + 1 < fv.size(); ++k) {
-      hit_triangle(p0, limit[size_t(fv[k])].p - centre, limit[size_t(fv[k + 1])].p - centre);
+      cast_rays_at_triangle(table_, p0, limit[size_t(fv[k])].p - centre,
+                            limit[size_t(fv[k + 1])].p - centre);
     }
   }
 
-  // Mean radius over the sphere of directions, each grid point weighted by
-  // its solid angle, du dv / (1 + u^2 + v^2)^(3/2) for the gnomonic map.
-  double sum = 0, weight = 0;
-  for (int face = 0; face < 6; ++face) {
-    for (int j = 0; j <= kN; ++j) {
-      for (int i = 0; i <= kN; ++i) {
-        double r = cell(face, i, j);
-        if (r <= 0) {
-          glm::dvec3 q = glm::normalize(grid_direction(face, i, j));
-          throw InputError(fmt::format(
-              "{}: the {} lies outside the cage's limit surface (the ray towards "
-              "({:.3f}, {:.3f}, {:.3f}) meets no surface); the cage must be star-shaped about it",
-              name, units_m ? "origin" : "centroid", q.x, q.y, q.z));
-        }
-        double l = glm::length(grid_direction(face, i, j));
-        double w = 1.0 / (l * l * l);
-        sum += w * r;
-        weight += w;
-      }
-    }
-  }
-  scale_ = units_m ? *units_m : body_radius_ / (sum / weight);
+  double mean = mean_radius(table_, name, units_m.has_value());  // checks every ray met the cage
+  scale_ = units_m ? *units_m : body_radius_ / mean;
   for (double& r : table_) r *= scale_;
   chord_error *= scale_;
   for (const Point& p : limit) limit_points_.push_back((p.p - centre) * scale_);
 
-  // Slope and curvature of the table per radian of direction, from the
-  // first and second differences between grid neighbours.
-  double second = 0;  // largest second difference along a grid line, metres
+  double second = measure_table();
+  // Bilinear interpolation of a C2 function misses it by at most
+  // h^2 / 8 (max |f_uu| + max |f_vv|); h^2 f_uu is the second difference.
+  // Doubled for margin, since the differences only sample the curvature;
+  // the mesh's own sag adds.
+  table_error_ = 2.0 * (second + second) / 8.0 + chord_error;
+
+  HeightRange n = noise_.range();
+  range_ = {min_radius_ - table_error_ - body_radius_ + n.min,
+            max_radius_ + table_error_ - body_radius_ + n.max};
+}
+
+// Slope and curvature of the table per radian of direction, from the first
+// and second differences between grid neighbours; returns the largest
+// second difference along a grid line, metres.
+double CageHeight::measure_table() {
+  double second = 0;
   min_radius_ = 1e300, max_radius_ = 0;
   for (int face = 0; face < 6; ++face) {
     for (int j = 0; j <= kN; ++j) {
@@ -255,15 +285,7 @@ CageHeight::CageHeight(const ObjCage& cage, const std::string& name, double body
       }
     }
   }
-  // Bilinear interpolation of a C2 function misses it by at most
-  // h^2 / 8 (max |f_uu| + max |f_vv|); h^2 f_uu is the second difference.
-  // Doubled for margin, since the differences only sample the curvature;
-  // the mesh's own sag adds.
-  table_error_ = 2.0 * (second + second) / 8.0 + chord_error;
-
-  HeightRange n = noise_.range();
-  range_ = {min_radius_ - table_error_ - body_radius_ + n.min,
-            max_radius_ + table_error_ - body_radius_ + n.max};
+  return second;
 }
 
 double CageHeight::surface_radius(const glm::dvec3& d) const {

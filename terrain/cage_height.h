@@ -68,8 +68,13 @@ class CageHeight : public HeightSource {
   double scale() const { return scale_; }
 
  private:
-  double& cell(int face, int i, int j) { return table_[size_t((face * (kTableCells + 1) + j) * (kTableCells + 1) + i)]; }
-  double cell(int face, int i, int j) const { return table_[size_t((face * (kTableCells + 1) + j) * (kTableCells + 1) + i)]; }
+  double measure_table();
+  double& cell(int face, int i, int j) {
+    return table_[size_t((face * (kTableCells + 1) + j) * (kTableCells + 1) + i)];
+  }
+  double cell(int face, int i, int j) const {
+    return table_[size_t((face * (kTableCells + 1) + j) * (kTableCells + 1) + i)];
+  }
 
   double body_radius_;
   double scale_ = 1;
