@@ -3,6 +3,7 @@
 // the sun's disk and each pixel, and its width against the wind.
 #include "terrain/gpu/terrain_renderer.h"
 #include "terrain/sea_brdf.h"
+#include "tests/terrain/terrain_target.h"
 
 #include "atmosphere/gpu/atmosphere_block.h"
 #include "core/image_io.h"
@@ -118,14 +119,6 @@ double reference_glint(const Body& body, const View& v, int row, double sigma2) 
 
 class SeaGlintGLTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    context_ = GlContext::create_headless();
-    color_ = make_texture_2d(GL_RGBA32F, kWidth, kHeight);
-    depth_ = make_texture_2d(GL_DEPTH_COMPONENT32F, kWidth, kHeight);
-    fbo_ = make_framebuffer(color_.id(), depth_.id());
-    AtmosphereBlock zero{};
-    block_ = make_buffer(sizeof(zero), &zero);
-  }
 
   // The middle column's radiance (red), from the bottom row up; the image
   // written to the test's folder for a person to look at.
@@ -133,14 +126,7 @@ class SeaGlintGLTest : public ::testing::Test {
     TerrainRenderer terrain(body, TerrainOptions{});
     terrain.wait_until_complete(v.camera, kWidth, kHeight, 120.0);
     const float black[4] = {0, 0, 0, 1};
-    glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-    begin_reversed_z(fbo_.id(), kWidth, kHeight, black);
-    glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, block_.id());
-    TerrainLighting lighting;
-    lighting.sun_dir_body = v.sun;
-    terrain.draw(v.camera, kWidth, kHeight, lighting);
-    glDisable(GL_DEPTH_TEST);
-    std::vector<float> rgba = read_texture_rgba32f(color_.id(), kWidth, kHeight);
+    std::vector<float> rgba = target_.draw(terrain, v.camera, v.sun, black);
     std::vector<uint8_t> ldr(size_t(kWidth) * kHeight * 3);
     for (int y = 0; y < kHeight; ++y) {
       for (int x = 0; x < kWidth; ++x) {
@@ -159,10 +145,7 @@ class SeaGlintGLTest : public ::testing::Test {
     return column;
   }
 
-  std::unique_ptr<GlContext> context_;
-  Texture color_, depth_;
-  Framebuffer fbo_;
-  Buffer block_;
+  TerrainTarget target_{kWidth, kHeight};
 };
 
 TEST_F(SeaGlintGLTest, GlintAlongALineMatchesTheBrdfIntegratedOverSunAndPixel) {

@@ -1,6 +1,7 @@
 // Terrain drawn headless: no crack between tiles of different levels lets
 // the background through, from the ground to high above.
 #include "terrain/gpu/terrain_renderer.h"
+#include "tests/terrain/terrain_target.h"
 
 #include "atmosphere/gpu/atmosphere_block.h"
 #include "core/data_paths.h"
@@ -24,32 +25,13 @@ constexpr int kWidth = 160, kHeight = 90;
 
 class TerrainGLTest : public ::testing::Test {
  protected:
-  void SetUp() override {
-    context_ = GlContext::create_headless();
-    color_ = make_texture_2d(GL_RGBA32F, kWidth, kHeight);
-    depth_ = make_texture_2d(GL_DEPTH_COMPONENT32F, kWidth, kHeight);
-    fbo_ = make_framebuffer(color_.id(), depth_.id());
-    AtmosphereBlock zero{};
-    block_ = make_buffer(sizeof(zero), &zero);
-  }
-
   // Draws the terrain over a magenta background; returns RGBA, bottom-up.
   std::vector<float> draw(TerrainRenderer& terrain, const Camera& camera, const glm::dvec3& sun) {
     const float magenta[4] = {1, 0, 1, 1};
-    glClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-    begin_reversed_z(fbo_.id(), kWidth, kHeight, magenta);
-    glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, block_.id());
-    TerrainLighting lighting;
-    lighting.sun_dir_body = sun;
-    terrain.draw(camera, kWidth, kHeight, lighting);
-    glDisable(GL_DEPTH_TEST);
-    return read_texture_rgba32f(color_.id(), kWidth, kHeight);
+    return target_.draw(terrain, camera, sun, magenta);
   }
 
-  std::unique_ptr<GlContext> context_;
-  Texture color_, depth_;
-  Framebuffer fbo_;
-  Buffer block_;
+  TerrainTarget target_{kWidth, kHeight};
 };
 
 TEST_F(TerrainGLTest, NoBackgroundShowsThroughTheGroundFromManyViewpoints) {
