@@ -48,10 +48,19 @@ Body load_body(const std::filesystem::path& file) {
 }
 
 std::filesystem::path find_body_file(const std::string& name_or_path) {
+  // A folder of the body's name where the command runs (`mars/` for a
+  // capture's output) is not the body file: the shipped body is.
   std::filesystem::path p(name_or_path);
-  if (std::filesystem::exists(p)) return p;
+  std::error_code ec;
+  bool folder = std::filesystem::is_directory(p, ec);
+  if (!folder && std::filesystem::exists(p)) return p;
   std::filesystem::path shipped = data_dir() / "planets" / (name_or_path + ".json");
   if (std::filesystem::exists(shipped)) return shipped;
+  if (folder) {
+    throw InputError(fmt::format(
+        "{}: a folder, not a body file, and no body of that name in {} ({})", name_or_path,
+        (data_dir() / "planets").string(), fmt::join(shipped_body_names(), ", ")));
+  }
   throw InputError(fmt::format("{}: no such body file, and no body of that name in {} ({})",
                                name_or_path, (data_dir() / "planets").string(),
                                fmt::join(shipped_body_names(), ", ")));
