@@ -51,12 +51,12 @@ fly() {
   grep "^body: " "$out"
 }
 
-# By day: Earth -> Mars -> asteroid -> Moon -> Earth, 2 m up over the Alps
+# By day: Earth -> Mars -> asteroid -> Moon -> Eros -> Earth, 2 m up over the Alps
 # at 10:00 UTC (10:30 local solar time).
-fly day "b b b b"
-[ "$(grep -c "^body: " "$out")" -eq 5 ] || fail "not five bodies"
-grep "^body: " "$out" | tail -n 4 | while read -r line; do
-  echo "$line" | grep -q ", 2\.0 m above the ground (.*kept from [A-Za-z]*: lat 46\.5500 lon 7\.9800, the height above the ground, local solar time 10:3[01] " ||
+fly day "b b b b b"
+[ "$(grep -c "^body: " "$out")" -eq 6 ] || fail "not six bodies"
+grep "^body: " "$out" | tail -n 5 | while read -r line; do
+  echo "$line" | grep -q ", 2\.0 m above the ground (.*kept from [0-9A-Za-z ]*: lat 46\.5500 lon 7\.9800, the height above the ground, local solar time 10:3[01] " ||
     { echo "FAIL: the switch did not keep the place, height or time: $line"; exit 1; }
   elevation=$(echo "$line" | sed -n 's/.*; sun \(-*[0-9.]*\) deg: day$/\1/p')
   [ -n "$elevation" ] || { echo "FAIL: not day after the switch: $line"; exit 1; }

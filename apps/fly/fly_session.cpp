@@ -37,7 +37,7 @@ constexpr double kRecordRate = 10.0;  // recorded keyframes (= capture frames) p
 // frame itself takes to draw (the window's rate halves while they are
 // built), and at least this long: a quick frame does not stretch the build.
 constexpr double kLeastBuildSlice = 0.05;
-const std::array<const char*, 4> kBodies = {"earth", "mars", "asteroid", "moon"};
+const std::array<const char*, 5> kBodies = {"earth", "mars", "asteroid", "moon", "eros"};
 
 // "10:30 local solar time" from the sun's hour angle.
 std::string solar_time_text(double hour_angle) {
