@@ -14,30 +14,19 @@
 #include <fstream>
 #include <functional>
 
+#include "tests/atmosphere/atmosphere_json.h"
 #include "tests/unity_id.h"
 
 namespace planet {
 namespace {
 namespace PLANET_TEST_ID {
 
-nlohmann::json kider_atmosphere() {
-  std::ifstream in(data_dir() / "planets" / "earth_kider_2013.json");
-  return nlohmann::json::parse(in)["atmosphere"];
-}
+nlohmann::json kider_atmosphere() { return shipped_atmosphere("earth_kider_2013"); }
 
-AtmosphereModel parse(const nlohmann::json& a) {
-  return parse_atmosphere(JsonObject(a, "day.json", "atmosphere"));
-}
+AtmosphereModel parse(const nlohmann::json& a) { return parse_atmosphere_json(a, "day.json"); }
 
 std::string error_after(const std::function<void(nlohmann::json&)>& edit) {
-  nlohmann::json a = kider_atmosphere();
-  edit(a);
-  try {
-    parse(a);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
+  return atmosphere_error_after("earth_kider_2013", "day.json", edit);
 }
 
 TEST(AtmosphereInputsTest, RayleighMatchesPenndorfsTable) {

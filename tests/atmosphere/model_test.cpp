@@ -13,31 +13,20 @@
 #include <functional>
 #include <limits>
 
+#include "tests/atmosphere/atmosphere_json.h"
 #include "tests/unity_id.h"
 
 namespace planet {
 namespace {
 namespace PLANET_TEST_ID {
 
-nlohmann::json earth_atmosphere() {
-  std::ifstream in(data_dir() / "planets" / "earth.json");
-  return nlohmann::json::parse(in)["atmosphere"];
-}
+nlohmann::json earth_atmosphere() { return shipped_atmosphere("earth"); }
 
-AtmosphereModel parse(const nlohmann::json& a) {
-  return parse_atmosphere(JsonObject(a, "bad.json", "atmosphere"));
-}
+AtmosphereModel parse(const nlohmann::json& a) { return parse_atmosphere_json(a, "bad.json"); }
 
 // Parses Earth's atmosphere changed by `edit` and returns the error message.
 std::string error_after(const std::function<void(nlohmann::json&)>& edit) {
-  nlohmann::json a = earth_atmosphere();
-  edit(a);
-  try {
-    parse(a);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "(no error)";
+  return atmosphere_error_after("earth", "bad.json", edit);
 }
 
 TEST(AtmosphereModelTest, EarthHasTheDesignValues) {
