@@ -139,6 +139,13 @@ Scene find_scene(const std::string& name) {
   throw InputError(fmt::format("'{}' is not a canonical scene ({})", name, known));
 }
 
+Scene find_scene(const std::string& name, int width, int height) {
+  Scene scene = find_scene(name);
+  scene.width = width;
+  scene.height = height;
+  return scene;
+}
+
 Body scene_body(const Scene& scene) {
   Body body = load_body(find_body_file(scene.body));
   if (scene.bottom_radius && body.has_atmosphere()) {

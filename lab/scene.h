@@ -62,6 +62,8 @@ Scene placed(Scene scene, const ScenePlacement& placement);
 std::vector<Scene> canonical_scenes();
 // A canonical scene by name; InputError naming the known ones otherwise.
 Scene find_scene(const std::string& name);
+// The same, drawn at another size (the tests' 32x16).
+Scene find_scene(const std::string& name, int width, int height);
 
 // What names the scene's renders in the reference cache: "earth_noon-32x16",
 // "earth_noon-order1-32x16" for its ground truth limited to one order.

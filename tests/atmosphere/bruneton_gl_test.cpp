@@ -26,13 +26,6 @@ namespace planet {
 namespace {
 namespace PLANET_TEST_ID {
 
-Scene small_scene(const std::string& name) {
-  Scene scene = find_scene(name);
-  scene.width = 32;
-  scene.height = 16;
-  return scene;
-}
-
 // Small tables: a precompute of a second or two on llvmpipe.
 BrunetonTechnique::Settings small_settings() {
   BrunetonTechnique::Settings s;
@@ -64,7 +57,7 @@ TEST_F(BrunetonGLTest, OneOrderIsSingleScattering) {
   };
   for (const Case& c : {Case{"earth_noon", 0.012}, Case{"earth_sunset", 0.08},
                         Case{"mars_noon", 0.005}}) {
-    Scene scene = small_scene(c.scene);
+    Scene scene = find_scene(c.scene, 32, 16);
     ImageRGB single = render_scene_with(scene, "bruneton:bruneton2017,orders=1,floats=full");
     ImageRGB march = render_scene_with(scene, "raymarch:fine");
     TechniqueAccuracy difference = measure_accuracy(scene, single, march);
@@ -84,7 +77,7 @@ std::vector<float> scattering_texels(const BrunetonTechnique& technique) {
 }
 
 TEST_F(BrunetonGLTest, CorruptCacheIsReportedAndRebuilt) {
-  Scene scene = small_scene("asteroid_surface");
+  Scene scene = find_scene("asteroid_surface", 32, 16);
   AtmosphereModel model = scene_atmosphere(scene, scene_body(scene));
   BrunetonTechnique::Settings settings = small_settings();
   settings.orders = 3;  // a key no other test uses
@@ -145,7 +138,7 @@ TEST_F(BrunetonGLTest, CorruptCacheIsReportedAndRebuilt) {
 // units the passes read, other images, another program and atmosphere
 // block), they are the same bytes as the tables built in one go.
 TEST_F(BrunetonGLTest, TablesBuiltInSlicesAreTheSameBytes) {
-  Scene scene = small_scene("earth_noon");
+  Scene scene = find_scene("earth_noon", 32, 16);
   AtmosphereModel model = scene_atmosphere(scene, scene_body(scene));
   BrunetonTechnique::Settings settings = small_settings();
   settings.orders = 4;  // the tail too; a key no other test uses

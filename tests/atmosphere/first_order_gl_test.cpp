@@ -75,9 +75,7 @@ const FirstOrderCase kPinnedFailures[] = {
 
 // Relative RMSE per channel in %, printed as a row of the tables above.
 std::array<double, 3> first_order_error(const FirstOrderCase& c) {
-  Scene scene = find_scene(c.scene);
-  scene.width = 32;
-  scene.height = 16;
+  Scene scene = find_scene(c.scene, 32, 16);
   scene.max_order = 1;
   ImageRGB reference = reference_image(scene, PathBudget(65536));
   TechniqueAccuracy accuracy =

@@ -29,13 +29,6 @@ namespace PLANET_TEST_ID {
 
 constexpr int kWidth = 32, kHeight = 16;
 
-Scene small_scene(const std::string& name) {
-  Scene scene = find_scene(name);
-  scene.width = kWidth;
-  scene.height = kHeight;
-  return scene;
-}
-
 bool all_finite(const std::vector<float>& values) {
   return std::all_of(values.begin(), values.end(), [](float v) { return std::isfinite(v); });
 }
@@ -71,7 +64,7 @@ class OneilAccuracyGLTest : public ::testing::TestWithParam<AccuracyCase> {
 
 TEST_P(OneilAccuracyGLTest, StaysWithinTodaysErrorOfTheGroundTruth) {
   const AccuracyCase& c = GetParam();
-  Scene scene = small_scene(c.scene);
+  Scene scene = find_scene(c.scene, kWidth, kHeight);
   Body body = scene_body(scene);
   AtmosphereModel model = scene_atmosphere(scene, body);
   auto shipped = shipped_reference_dir() /
@@ -129,7 +122,7 @@ ImageRGB render_without_absorber(const Scene& scene, const std::string& techniqu
 TEST(OneilScaleGLTest, FittedScaleBeatsTheChaptersOnMarsAndTheAsteroid) {
   auto context = GlContext::create_headless();
   for (const char* name : {"mars_noon", "mars_sunset", "asteroid_surface", "asteroid_space"}) {
-    Scene scene = small_scene(name);
+    Scene scene = find_scene(name, kWidth, kHeight);
     ImageRGB truth = render_without_absorber(scene, "raymarch:view_steps=128,light_steps=64");
     TechniqueAccuracy fitted =
         measure_accuracy(scene, render_without_absorber(scene, "oneil:samples=16"), truth);
@@ -150,7 +143,7 @@ constexpr int kFirstOrderPaths = 65536;  // of the shipped --max-order 1 referen
 TEST(OneilScaleGLTest, FittedScaleBeatsTheChaptersAgainstThePathTracersFirstOrder) {
   auto context = GlContext::create_headless();
   for (const char* name : {"mars_noon", "mars_sunset", "asteroid_surface", "asteroid_space"}) {
-    Scene scene = small_scene(name);
+    Scene scene = find_scene(name, kWidth, kHeight);
     scene.max_order = 1;
     Body body = scene_body(scene);
     AtmosphereModel model = scene_atmosphere(scene, body);

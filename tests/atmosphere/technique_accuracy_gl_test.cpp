@@ -29,13 +29,6 @@ namespace PLANET_TEST_ID {
 
 constexpr int kWidth = 32, kHeight = 16;
 
-Scene small_scene(const std::string& name) {
-  Scene scene = find_scene(name);
-  scene.width = kWidth;
-  scene.height = kHeight;
-  return scene;
-}
-
 struct TechniqueCase {
   const char* technique;
   const char* scene;
@@ -119,7 +112,7 @@ class TechniqueAccuracyGLTest : public ::testing::TestWithParam<TechniqueCase> {
 
 TEST_P(TechniqueAccuracyGLTest, HoldsTodaysErrorAgainstTheGroundTruth) {
   const TechniqueCase& c = GetParam();
-  Scene scene = small_scene(c.scene);
+  Scene scene = find_scene(c.scene, kWidth, kHeight);
   ImageRGB reference = reference_image(scene, shipped_reference_paths(c.scene));
   ImageRGB technique = render_scene_with(scene, c.technique);
   for (float v : technique.pixels) ASSERT_TRUE(std::isfinite(v)) << "NaN or Inf in the image";
@@ -172,7 +165,7 @@ TEST(BrunetonEarthGLTest, HoldsTodaysErrorAndBeatsThePapersLuts) {
       {"bruneton", "earth_40000km", {1.81, 2.12, 3.45}},
   };
   for (const TechniqueCase& c : cases) {
-    Scene scene = small_scene(c.scene);
+    Scene scene = find_scene(c.scene, kWidth, kHeight);
     ImageRGB reference = reference_image(scene, shipped_reference_paths(c.scene));
     ImageRGB technique = render_scene_with(scene, c.technique);
     TechniqueAccuracy ours = measure_accuracy(scene, technique, reference);
