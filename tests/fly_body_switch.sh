@@ -21,32 +21,21 @@ fly() {
   out="$work/$name.txt"
   timeout 300 "$planet" fly --render-scale 0.25 --size 640x360 --out "$work/$name" "$@" \
     > "$out" 2> "$out.err" &
-  local pid=$! window=""
-  for _ in $(seq 1 300); do
-    window=$(xdotool search --name "planet fly" 2>/dev/null | head -1)
-    [ -n "$window" ] && break
-    sleep 0.2
-  done
-  [ -n "$window" ] || fail "no window appeared"
-  for _ in $(seq 1 300); do
-    grep -q "^body: " "$out" && xdotool windowfocus "$window" 2>/dev/null && break
-    sleep 0.2
-  done
-  sleep 0.5
+  local pid=$!
+  await_fly_window "$out" "$out.err"
   for key in $keys; do
     # "settle": the new body's first tiles load for two seconds (for a few
     # frames after a switch its coarsest tiles can fill the view).
     [ "$key" = settle ] && { sleep 2; continue; }
     local want=$(( $(wc -l < "$out") + 1 ))
-    # GLFW samples key state once a frame: hold each key across a few frames.
-    xdotool keydown "$key"; sleep 0.5; xdotool keyup "$key"
+    hold_key "$key"
     for _ in $(seq 1 300); do
       [ "$(wc -l < "$out")" -ge "$want" ] && break
       sleep 0.2
     done
     [ "$(wc -l < "$out")" -ge "$want" ] || fail "no answer to $key"
   done
-  xdotool keydown Escape; sleep 0.5; xdotool keyup Escape
+  hold_key Escape
   wait "$pid" || fail "planet fly exited $?"
   grep "^body: " "$out"
 }

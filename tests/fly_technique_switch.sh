@@ -21,28 +21,15 @@ fly_start() {
   PLANET_CACHE_DIR="$run/cache" timeout 600 "$planet" fly --render-scale 0.1 --out "$run" \
     > "$run/fly.txt" 2> "$run/fly.err" &
   fly=$!
-  window=""
-  for _ in $(seq 1 300); do
-    window=$(xdotool search --name "planet fly" 2>/dev/null | head -1)
-    [ -n "$window" ] && break
-    sleep 0.2
-  done
-  [ -n "$window" ] || { echo "FAIL: no window appeared"; cat "$run/fly.err"; exit 1; }
-  for _ in $(seq 1 300); do
-    grep -q "^body: " "$run/fly.txt" && xdotool windowfocus "$window" 2>/dev/null && break
-    sleep 0.2
-  done
-  sleep 0.5
+  await_fly_window "$run/fly.txt" "$run/fly.err"
 }
-# GLFW samples key state once a frame: hold each key across a few frames.
-key() { xdotool keydown "$1"; sleep 0.5; xdotool keyup "$1"; }
 # wait_for FILE PATTERN SECONDS
 wait_for() {
   for _ in $(seq 1 $(( $3 * 5 ))); do grep -q "$2" "$1" && return 0; sleep 0.2; done
   echo "FAIL: no '$2' in $1 within $3 s"; cat "$run/fly.txt" "$run/fly.err"; exit 1
 }
 fly_quit() {
-  key Escape
+  hold_key Escape
   wait "$fly"; local rc=$?
   fly=""
   cat "$run/fly.txt"
@@ -52,9 +39,9 @@ fly_quit() {
 # A second T while bruneton's tables are built: they are dropped, and the
 # next technique comes instead.
 fly_start cancel
-key t
+hold_key t
 wait_for "$run/fly.err" "bruneton tables" 120
-key t
+hold_key t
 wait_for "$run/fly.txt" "^technique: oneil" 120
 fly_quit
 grep -q "^technique: bruneton" "$run/fly.txt" &&
@@ -62,9 +49,9 @@ grep -q "^technique: bruneton" "$run/fly.txt" &&
 
 # T to bruneton, the slow path: the window answers F12 while the tables are built.
 fly_start build
-key t
+hold_key t
 wait_for "$run/fly.err" "bruneton tables" 120
-key F12
+hold_key F12
 wait_for "$run/fly.txt" "^screenshot: " 60
 wait_for "$run/fly.txt" "^technique: bruneton" 500
 fly_quit

@@ -11,22 +11,9 @@ trap 'kill "$xvfb" 2>/dev/null' EXIT
 # The default window, drawn at a tenth of its size to keep llvmpipe quick.
 timeout 500 "$planet" fly --render-scale 0.1 --out "$work" > "$work/fly.txt" 2> "$work/fly.err" &
 fly=$!
-window=""
-for _ in $(seq 1 300); do
-  window=$(xdotool search --name "planet fly" 2>/dev/null | head -1)
-  [ -n "$window" ] && break
-  sleep 0.2
-done
-[ -n "$window" ] || { echo "FAIL: no window appeared"; cat "$work/fly.err"; exit 1; }
-# Focus once the program draws (the window is mapped by then).
-for _ in $(seq 1 300); do
-  grep -q "^body: " "$work/fly.txt" && xdotool windowfocus "$window" 2>/dev/null && break
-  sleep 0.2
-done
-sleep 0.5
-# GLFW samples key state once a frame: hold each key across a few frames.
+await_fly_window "$work/fly.txt" "$work/fly.err"
 press() {
-  xdotool keydown "$1"; sleep 0.5; xdotool keyup "$1"
+  hold_key "$1"
   # Wait until the program has answered (a line more on its output).
   # (up to $3 s, 60 by default: a switch to bruneton builds its tables
   # first, which took over 200 s on a machine running other tests beside it).
@@ -49,7 +36,7 @@ started=$(date +%s.%N)
 xdotool keydown Shift_L keydown f; sleep 5; xdotool keyup f keyup Shift_L
 press F9 7       # recorded N frames into ...
 recorded_wall=$(awk -v a="$started" -v b="$(date +%s.%N)" 'BEGIN { print b - a }')
-xdotool keydown Escape; sleep 0.5; xdotool keyup Escape
+hold_key Escape
 wait "$fly"; rc=$?
 cat "$work/fly.txt"
 [ "$rc" -eq 0 ] || { echo "FAIL: planet fly exited $rc"; cat "$work/fly.err"; exit 1; }

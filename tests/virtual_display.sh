@@ -27,3 +27,23 @@ for _ in 1 2 3; do
   kill "$xvfb" 2>/dev/null
 done
 [ "$answered" = 1 ] || { echo "FAIL: no virtual display answered (Xvfb on three numbers, 30 s each)"; exit 1; }
+
+# await_fly_window OUT ERR: waits for `planet fly`'s window (up to 60 s),
+# then for its first "body: " line in OUT (the window is mapped and drawn
+# by then) and focuses it; sets $window. ERR is shown if none appears.
+await_fly_window() {
+  window=""
+  for _ in $(seq 1 300); do
+    window=$(xdotool search --name "planet fly" 2>/dev/null | head -1)
+    [ -n "$window" ] && break
+    sleep 0.2
+  done
+  [ -n "$window" ] || { echo "FAIL: no window appeared"; cat "$2"; exit 1; }
+  for _ in $(seq 1 300); do
+    grep -q "^body: " "$1" && xdotool windowfocus "$window" 2>/dev/null && break
+    sleep 0.2
+  done
+  sleep 0.5
+}
+# GLFW samples key state once a frame: hold_key KEY holds it across a few.
+hold_key() { xdotool keydown "$1"; sleep 0.5; xdotool keyup "$1"; }
