@@ -18,7 +18,6 @@ same.
 """
 import base64
 import html
-import json
 import math
 import os
 import sys
@@ -27,6 +26,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from report_table import load_table  # noqa: E402
 from matplotlib.ticker import FuncFormatter  # noqa: E402
 
 MARKERS = "osD^v<>ph*"
@@ -34,16 +34,8 @@ FLOOR = 1e-4  # errors below this are drawn at it (a log axis has no 0)
 
 
 def load(out):
-    path = os.path.join(out, "results.json")
-    try:
-        with open(path, encoding="utf-8") as f:
-            results = json.load(f)
-    except (OSError, ValueError) as e:
-        sys.exit(f"lab_report: {path}: {e}")
-    for key in ("cells", "overall"):
-        if key not in results:
-            sys.exit(f"lab_report: {path}: no '{key}': not the results of planet lab run")
-    return results
+    return load_table(out, "results.json", ("cells", "overall"), "lab_report",
+                      "the results of planet lab run")
 
 
 def styles(points):

@@ -21,7 +21,6 @@ and OUT/report.html, one page with the tables and every plot inline.
 """
 import base64
 import html
-import json
 import math
 import os
 import sys
@@ -30,22 +29,15 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from report_table import load_table  # noqa: E402
 
 BANDS = [450.0, 550.0, 650.0]
 BAND_COLOURS = {450.0: "#1f5fbf", 550.0: "#2a9d3a", 650.0: "#c0392b"}
 
 
 def load(out):
-    path = os.path.join(out, "measured.json")
-    try:
-        with open(path, encoding="utf-8") as f:
-            doc = json.load(f)
-    except (OSError, ValueError) as e:
-        sys.exit(f"measured_report: {path}: {e}")
-    for key in ("captures", "totals", "wavelengths_nm"):
-        if key not in doc:
-            sys.exit(f"measured_report: {path}: no '{key}': not the output of planet lab measured")
-    return doc
+    return load_table(out, "measured.json", ("captures", "totals", "wavelengths_nm"), "measured_report",
+                      "the output of planet lab measured")
 
 
 def sources(doc):

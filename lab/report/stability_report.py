@@ -25,6 +25,7 @@ import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+from report_table import load_table  # noqa: E402
 from matplotlib.colors import to_rgba  # noqa: E402
 
 CLASSES = ["ok", "inaccurate", "nan", "exploded", "failed"]
@@ -39,16 +40,8 @@ LOG_AXES = {"density", "radius", "radius_absolute", "scale_height", "altitude"} 
 
 
 def load(out):
-    path = os.path.join(out, "stability.json")
-    try:
-        with open(path, encoding="utf-8") as f:
-            data = json.load(f)
-    except (OSError, ValueError) as e:
-        sys.exit(f"stability_report: {path}: {e}")
-    for key in ("results", "bodies", "budget_percent"):
-        if key not in data:
-            sys.exit(f"stability_report: {path}: no '{key}': not planet lab stability's table")
-    return data
+    return load_table(out, "stability.json", ("results", "bodies", "budget_percent"), "stability_report",
+                      "planet lab stability's table")
 
 
 def points_of(results):
@@ -118,7 +111,6 @@ def heat_maps(data, body, plane, stem):
         return False
     pts = points_of(here)
     techniques = list(dict.fromkeys(t for t, _ in pts))
-    qualities = ["default", "cheapest"]
     fig, axes = plt.subplots(2, len(techniques), figsize=(3.0 * len(techniques), 5.6),
                              squeeze=False)
 
