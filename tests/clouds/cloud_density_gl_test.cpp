@@ -60,7 +60,7 @@ TEST(CloudDensityGLTest, GpuFloatAgreesWithCpuDouble) {
   cpu_layer.bottom_radius = block[0];
   cpu_layer.top_radius = block[1];
   // Tolerances. A position near 6.4e6 m holds 0.5 m steps in float; the
-  // shape noise's cells are 5 km and the erosion's 700 m, so a lattice
+  // shape noise's cells are 9 km and the erosion's 1.2 km, so a lattice
   // coordinate carries about 1e-3 of a cell of rounding (p / scale in
   // float), which a noise of slope near 1 a cell turns into 1e-3, and the
   // remaps (by up to 1 / (1 - lo)) into a few 1e-3 of density (measured:
