@@ -111,11 +111,12 @@ void main() {
   // Rebased at the entry, as the sky's marches are: far away the camera's
   // coordinates have too few bits for the steps. Samples crowd near the
   // entry (s = u^2), where a grazing stretch is nearest; a fixed offset
-  // per pixel (interleaved gradient noise, Jimenez 2014) turns banding
-  // into a fine, deterministic grain.
+  // per pixel (the clouds' own hash of the pixel: interleaved gradient
+  // noise left diagonal stripes on the cloud tops) turns banding into a
+  // fine, deterministic grain.
   vec3 origin = pixel.camera + t_enter * pixel.dir;
   float segment = t_exit - t_enter;
-  float jitter = fract(52.9829189 * fract(dot(gl_FragCoord.xy, vec2(0.06711056, 0.00583715))));
+  float jitter = float(cloud_hash(uvec3(uvec2(gl_FragCoord.xy), 7u)) >> 8u) / 16777216.0;
   float nu = dot(pixel.dir, u_sun_dir);
   float phase = cloud_phase(layer.droplet_diameter_um, nu);
   vec3 sun = atmosphere.solar_irradiance;
