@@ -102,20 +102,36 @@ void main() {
   CloudLayer layer = uniform_layer();
   SkyPixel pixel = sky_pixel(atmosphere, u_depth, u_surface, v_ndc, u_ray_from_ndc, u_near,
                              u_camera);
+  // The ray's stretches in the layer's shell: the first (ray_shell), and
+  // for a ray that dips below the base from inside the layer and misses
+  // the ground, the second where it comes back up: seen from just below
+  // the base that stretch is the first, so leaving it out made the
+  // horizon jump as the camera crossed the base.
   float t_enter, t_exit;
   if (!ray_shell(pixel.camera, pixel.dir, layer.bottom_radius, layer.top_radius, t_enter, t_exit)) {
     return;
   }
+  float t_again = 0.0, t_again_exit = 0.0;
+  float base_near, base_far, top_near, top_far;
+  if (ray_sphere(pixel.camera, pixel.dir, layer.bottom_radius, base_near, base_far) &&
+      base_near > t_enter &&
+      ray_sphere(pixel.camera, pixel.dir, layer.top_radius, top_near, top_far)) {
+    t_again = base_far;
+    t_again_exit = min(top_far, pixel.t_surface);
+  }
   t_exit = min(t_exit, pixel.t_surface);
-  if (t_exit <= t_enter) return;
-  // Rebased at the entry, as the sky's marches are: far away the camera's
-  // coordinates have too few bits for the steps. Samples crowd near the
-  // entry (s = u^2), where a grazing stretch is nearest; a fixed offset
-  // per pixel (the clouds' own hash of the pixel: interleaved gradient
-  // noise left diagonal stripes on the cloud tops) turns banding into a
-  // fine, deterministic grain.
+  float first = max(t_exit - t_enter, 0.0);
+  float second = max(t_again_exit - t_again, 0.0);
+  float segment = first + second;
+  if (segment <= 0.0) return;
+  // Each stretch rebased at its entry, as the sky's marches are: far away
+  // the camera's coordinates have too few bits for the steps. Samples
+  // crowd near the entry (s = u^2 over both stretches end to end), where a
+  // grazing stretch is nearest; a fixed offset per pixel (the clouds' own
+  // hash of the pixel: interleaved gradient noise left diagonal stripes on
+  // the cloud tops) turns banding into a fine, deterministic grain.
   vec3 origin = pixel.camera + t_enter * pixel.dir;
-  float segment = t_exit - t_enter;
+  vec3 origin_again = pixel.camera + t_again * pixel.dir;
   float jitter = float(cloud_hash(uvec3(uvec2(gl_FragCoord.xy), 7u)) >> 8u) / 16777216.0;
   float nu = dot(pixel.dir, u_sun_dir);
   float phase = cloud_phase(layer.droplet_diameter_um, nu);
@@ -123,7 +139,8 @@ void main() {
   // The sun through the air (and the planet's shadow) once a ray, at the
   // middle of its stretch in the layer: over the layer's few kilometres of
   // height it changes little but near the terminator.
-  vec3 mid = origin + (0.5 * segment) * pixel.dir;
+  vec3 mid = first > 0.0 ? origin + (0.5 * first) * pixel.dir
+                         : origin_again + (0.5 * second) * pixel.dir;
   vec3 sunlight = sun * sun_visibility(atmosphere, length(mid), dot(mid, u_sun_dir) / length(mid));
   vec3 radiance = vec3(0.0);
   float transmittance = 1.0;
@@ -135,7 +152,8 @@ void main() {
     float u_next = (float(i) + 1.0) / float(u_steps);
     float ds = segment * u_next * u_next - s_prev;
     s_prev = segment * u_next * u_next;
-    vec3 p = origin + s * pixel.dir;
+    bool again = s >= first;
+    vec3 p = again ? origin_again + (s - first) * pixel.dir : origin + s * pixel.dir;
     vec2 weather = cloud_weather(layer, p);
     float density = cloud_eroded_density(layer, p, cloud_shape_density(layer, p, weather));
     if (density <= 0.0) continue;
@@ -163,7 +181,8 @@ void main() {
     // (1 - exp(-extinction ds)) / extinction, exact for a constant source.
     float step_transmittance = exp(-extinction * ds);
     radiance += transmittance * source * (1.0 - step_transmittance);
-    weighted_t += transmittance * (1.0 - step_transmittance) * (t_enter + s);
+    weighted_t +=
+        transmittance * (1.0 - step_transmittance) * (again ? t_again + s - first : t_enter + s);
     weight += transmittance * (1.0 - step_transmittance);
     transmittance *= step_transmittance;
     if (transmittance < 1e-3) break;

@@ -102,12 +102,12 @@ TEST(CloudPassGLTest, CrossingTheLayersBaseAndTopDoesNotPop) {
                 boundary, median, worst);
     for (double c : changes) std::printf(" %.4f", c);
     std::printf("\n");
-    // Measured (docs/clouds.md#from-the-ground-to-orbit): at the top,
-    // worst 0.0055 against a median of 0.0038. At the base one step jumps
-    // (0.030 against 0.0017, in a line along the horizon; without the
-    // clouds 0.0009 against 0.0006): a known defect, pinned here so that
-    // it cannot grow unseen, until it is found and the bound is 3x.
-    EXPECT_LT(worst, (boundary == 1500.0 ? 25.0 : 3.0) * median) << boundary;
+    // Measured (docs/clouds.md#from-the-ground-to-orbit): at the base,
+    // worst 0.0030 against a median of 0.0024; at the top 0.0057 against
+    // 0.0044. Before the march took a ray's second stretch in the layer
+    // (one that dips under the base and comes back up), one step at the
+    // base changed the image by 0.030 against 0.0017, along the horizon.
+    EXPECT_LT(worst, 3.0 * median) << boundary;
   }
 }
 
