@@ -66,19 +66,24 @@ float optical_depth_to_sun(CloudLayer layer, vec3 p, vec2 weather) {
   return depth * layer.extinction * ds;
 }
 
-// Single scattering by the air from `origin` along dir over `length`, and
-// its transmittance: the aerial perspective in front of the clouds.
+// Single scattering by the air from `origin` along dir over `len`, and its
+// transmittance: the aerial perspective in front of the clouds. Samples
+// crowd toward the camera (s = u^2), where the air is densest along a
+// rising ray: spread evenly over a grazing way of hundreds of kilometres,
+// they would step over most of the air near the camera.
 void air_segment(Atmosphere atmosphere, vec3 origin, vec3 dir, float len, out vec3 inscatter,
                  out vec3 transmittance) {
-  const int kSteps = 6;
+  const int kSteps = 12;
   float nu = dot(dir, u_sun_dir);
   float phase_r = rayleigh_phase(nu);
   float phase_m = mie_phase(atmosphere, nu);
   vec3 depth = vec3(0.0);
   inscatter = vec3(0.0);
-  float ds = len / float(kSteps);
   for (int i = 0; i < kSteps; ++i) {
-    vec3 p = origin + ((float(i) + 0.5) * ds) * dir;
+    float u0 = float(i) / float(kSteps), u1 = float(i + 1) / float(kSteps);
+    float u = 0.5 * (u0 + u1);
+    float ds = len * (u1 * u1 - u0 * u0);
+    vec3 p = origin + (len * u * u) * dir;
     float r = length(p);
     float altitude = r - atmosphere.bottom_radius;
     vec3 extinction = extinction_at(atmosphere, altitude);
@@ -136,12 +141,17 @@ void main() {
   float nu = dot(pixel.dir, u_sun_dir);
   float phase = cloud_phase(layer.droplet_diameter_um, nu);
   vec3 sun = atmosphere.solar_irradiance;
-  // The sun through the air (and the planet's shadow) once a ray, at the
-  // middle of its stretch in the layer: over the layer's few kilometres of
-  // height it changes little but near the terminator.
-  vec3 mid = first > 0.0 ? origin + (0.5 * first) * pixel.dir
-                         : origin_again + (0.5 * second) * pixel.dir;
-  vec3 sunlight = sun * sun_visibility(atmosphere, length(mid), dot(mid, u_sun_dir) / length(mid));
+  // The sun through the air (and the planet's shadow) at the start, the
+  // middle and the end of the ray's way through the layer, and linearly
+  // between: a grazing way at sunset runs hundreds of kilometres, from
+  // sunlight into the planet's shadow.
+  vec3 sun_at[3];
+  for (int k = 0; k < 3; ++k) {
+    float s = 0.5 * float(k) * segment;
+    vec3 q = s < first || second <= 0.0 ? origin + min(s, first) * pixel.dir
+                                         : origin_again + (s - first) * pixel.dir;
+    sun_at[k] = sun * sun_visibility(atmosphere, length(q), dot(q, u_sun_dir) / length(q));
+  }
   vec3 radiance = vec3(0.0);
   float transmittance = 1.0;
   float weighted_t = 0.0, weight = 0.0;
@@ -159,6 +169,8 @@ void main() {
     if (density <= 0.0) continue;
     float extinction = layer.extinction * density;
     float r = length(p);
+    float w = 2.0 * s / segment;
+    vec3 sunlight = w < 1.0 ? mix(sun_at[0], sun_at[1], w) : mix(sun_at[1], sun_at[2], w - 1.0);
     float tau_sun = optical_depth_to_sun(layer, p, weather);
     // Wrenninge's octaves.
     float octaves = 0.0, b = 1.0, a = 1.0;
