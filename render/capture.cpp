@@ -1,6 +1,7 @@
 #include "render/capture.h"
 
 #include "atmosphere/gpu/registry.h"
+#include "clouds/cloud_model.h"
 #include "core/atomic_file.h"
 #include "core/error.h"
 #include "core/hash.h"
@@ -42,6 +43,7 @@ nlohmann::json image_json(const FlightScript& script) {
                           {"stars", script.stars}};
   // Only when asked: a capture without glare keeps the bytes it had.
   if (script.glare) image["glare"] = true;
+  if (script.clouds) image["clouds"] = true;
   return image;
 }
 
@@ -269,6 +271,7 @@ void set_up_renderer(FrameRenderer& renderer, const FlightScript& script,
   frame_options.terrain_shadows = script.terrain_shadows;
   frame_options.stars = script.stars;
   frame_options.glare = script.glare;
+  frame_options.clouds = script.clouds;
   frame_options.auto_exposure = script.auto_exposure;
   frame_options.terrain.pixel_budget = options.pixel_budget;
   frame_options.terrain.cache_bytes = options.terrain_cache_bytes;
@@ -373,6 +376,7 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
   std::unique_ptr<AtmosphereTechnique> technique;
   if (script.body.has_atmosphere()) {
     atmosphere = load_atmosphere(script.body);
+    load_clouds(script.body);  // its errors before any frame
     if (!governor) technique = make_technique(script_technique(script));
   }
   CaptureResult result;

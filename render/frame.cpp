@@ -3,6 +3,7 @@
 #include "atmosphere/atmosphere_inputs.h"
 #include "atmosphere/atmosphere_space.h"
 #include "atmosphere/gpu/atmosphere_block.h"
+#include "clouds/cloud_model.h"
 #include "gl/context.h"
 #include "gl/driver_watch.h"
 #include "render/glare.h"
@@ -55,6 +56,12 @@ void FrameRenderer::set_body(const Body& body, std::optional<AtmosphereModel> at
   body_ = body;
   atmosphere_ = std::move(atmosphere);
   technique_ = std::move(technique);
+  clouds_.reset();
+  if (atmosphere_) {
+    if (std::optional<CloudModel> clouds = load_clouds(body)) {
+      clouds_ = to_shared(*clouds, atmosphere_->bottom_radius);
+    }
+  }
 
   terrain_.reset();  // the old body's tiles go before the new body's come
   terrain_ = std::make_unique<TerrainRenderer>(body, options_.terrain);
@@ -263,6 +270,11 @@ std::vector<Pass> FrameRenderer::radiance_passes(const Frame& f, AtmosphereTechn
   out.push_back(self_timed_pass(
       prefix + "atmosphere", {prefix + "resolve", prefix + "terrain_shadow"},
       [&f] { return f.sky; }, [this, &f, technique] { draw_atmosphere(f, *technique); }));
+  // The clouds over the sky and the ground, in radiance.
+  out.push_back(frame_pass(
+      prefix + "clouds", {prefix + "atmosphere"},
+      [this, &f] { return f.sky && !f.display_values && options_.clouds && clouds_.has_value(); },
+      [this, &f, technique] { draw_clouds(f, *technique); }));
   // The partly covered pixels of the radiance take the rest from the open
   // ones beside them.
   out.push_back(frame_pass(prefix + "antialias", {prefix + "atmosphere"}, multisampled, [this, &f] {
@@ -438,6 +450,24 @@ void FrameRenderer::draw_atmosphere(const Frame& f, AtmosphereTechnique& techniq
   const GLint zero = 0;
   glClearNamedFramebufferiv(hdr_fbo_.id(), GL_STENCIL, 0, &zero);
   technique.render(sky, timer_);
+}
+
+void FrameRenderer::draw_clouds(const Frame& f, const AtmosphereTechnique& technique) {
+  if (!cloud_pass_) cloud_pass_ = std::make_unique<CloudPass>();
+  SkyFrame sky;
+  sky.width = width_;
+  sky.height = height_;
+  sky.camera_atmo = f.camera_atmo;
+  sky.atmo_ray_from_ndc =
+      glm::mat3(atmo_ray_from_ndc(f.atmo_scale, f.camera, double(width_) / double(height_)));
+  sky.sun_dir_atmo = f.sun_dir_atmo;
+  sky.near = float(f.camera.near);
+  sky.depth_texture = depth_.id();
+  sky.surface_texture = surface_.id();
+  sky.target_framebuffer = hdr_fbo_.id();
+  glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, atmosphere_block_.id());
+  glBindTextureUnit(SkyFrame::kGroundBelowUnit, ground_below_.id());
+  cloud_pass_->draw(sky, *clouds_, options_.cloud_quality, technique.ground_irradiance());
 }
 
 void FrameRenderer::draw_stars(const Frame& f) {

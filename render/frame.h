@@ -5,6 +5,7 @@
 // camera: body-frame positions in double never reach the GPU.
 #include "atmosphere/gpu/technique.h"
 #include "atmosphere/model.h"
+#include "clouds/gpu/cloud_pass.h"
 #include "gl/fullscreen_pass.h"
 #include "gl/pass_graph.h"
 #include "gl/program.h"
@@ -87,6 +88,11 @@ struct FrameOptions {
   // shell), so every pass and pixel is computed: what pruning is checked
   // against.
   bool view_pruning = true;
+  // The body's cloud layer (its file's "clouds"; clouds/gpu/cloud_pass.h)
+  // over the sky and the ground, at `cloud_quality`: off for the lab's
+  // clear skies and for the flights that do not ask for it.
+  bool clouds = false;
+  CloudQuality cloud_quality;
 };
 
 // A frame is a graph of passes (gl/pass_graph.h), in this order:
@@ -98,6 +104,7 @@ struct FrameOptions {
 //   resolve            with anti-aliasing, the lit surfaces and their coverage to one per pixel
 //   terrain_shadow     the terrain's shadow in the air (CPU), for a technique that draws it
 //   atmosphere         sky, sun and aerial perspective (the technique times its own passes)
+//   clouds             the body's cloud layer over them, the air in front of it
 //   antialias          with anti-aliasing, the surfaces' edges against the sky
 //   fade               the previous technique's frame laid over this one
 //   stars, exposure, glare, tonemap, smooth_edges
@@ -168,6 +175,7 @@ class FrameRenderer {
 
   void draw_surfaces(const Frame& f, const AtmosphereTechnique* technique);
   void draw_atmosphere(const Frame& f, AtmosphereTechnique& technique);
+  void draw_clouds(const Frame& f, const AtmosphereTechnique& technique);
   // The terrain's shadow in the air for the frame, needed by a technique
   // that draws it but for none when off, over a smooth body or high up;
   // updated when the camera's patch or the sun moved (timed as `pass`, on
@@ -208,6 +216,8 @@ class FrameRenderer {
   Body body_;
   std::optional<AtmosphereModel> atmosphere_;
   std::unique_ptr<AtmosphereTechnique> technique_;
+  std::optional<shared::CloudLayer> clouds_;  // the body's, in atmosphere space
+  std::unique_ptr<CloudPass> cloud_pass_;     // made on the first frame with clouds
   AtmosphereTechnique* fade_from_ = nullptr;
   double fade_weight_ = 0;
   Texture fade_;  // the previous technique's frame, made on the first fade

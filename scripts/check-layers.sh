@@ -2,8 +2,9 @@
 # The floors of the house, checked: every #include (C++ and GLSL), every
 # shader path named in C++ ("x/y.frag"), and every GL header, against the
 # table of rooms below. Arrows point down only:
-#   apps -> lab/gpu -> render -> {atmosphere/gpu, terrain/gpu} -> gl -> core
-#   {atmosphere, terrain} -> sim -> core
+#   apps -> lab/gpu -> render -> {atmosphere/gpu, clouds/gpu, terrain/gpu} -> gl -> core
+#   {atmosphere, terrain} -> sim -> core; clouds -> atmosphere (its shared math: phase,
+#   geometry) and clouds/gpu -> atmosphere/gpu (the technique that lights the clouds)
 #   {apps, lab/gpu, render} -> governor -> atmosphere (its choice is made on the CPU)
 #   {apps, lab/gpu} -> lab -> atmosphere (the scenes, references and metrics, CPU only)
 # atmosphere and terrain are kept apart, but for the one file of the
@@ -16,7 +17,7 @@ set -euo pipefail
 root="${1:-$(dirname "$0")/..}"
 cd "$root"
 
-rooms=(core gl sim atmosphere terrain governor render lab apps)
+rooms=(core gl sim atmosphere clouds terrain governor render lab apps)
 files=()
 for dir in "${rooms[@]}"; do
   [ -d "$dir" ] || continue
@@ -33,6 +34,7 @@ grep -HnoE '#[[:space:]]*include[[:space:]]*("[^"]+"|<[^>]+>)|"[A-Za-z0-9_./-]+\
   "${files[@]}" | awk -F: '
 function room(path) {
   if (path ~ /^atmosphere\/gpu\//) return "atmosphere/gpu"
+  if (path ~ /^clouds\/gpu\//) return "clouds/gpu"
   if (path ~ /^terrain\/gpu\//) return "terrain/gpu"
   if (path ~ /^lab\/gpu\//) return "lab/gpu"
   n = index(path, "/")
@@ -45,15 +47,17 @@ BEGIN {
   may["sim"] = "core"
   may["atmosphere"] = "sim core"
   may["terrain"] = "sim core"
+  may["clouds"] = "atmosphere sim core"
+  may["clouds/gpu"] = "clouds atmosphere/gpu atmosphere gl sim core"
   may["atmosphere/gpu"] = "atmosphere gl sim core"
   may["terrain/gpu"] = "terrain gl sim core"
   may["governor"] = "atmosphere sim core"
-  may["render"] = "governor atmosphere/gpu terrain/gpu atmosphere terrain gl sim core"
+  may["render"] = "governor clouds/gpu clouds atmosphere/gpu terrain/gpu atmosphere terrain gl sim core"
   may["lab"] = "atmosphere sim core"
-  may["lab/gpu"] = "lab render governor atmosphere/gpu terrain/gpu atmosphere terrain gl sim core"
-  may["apps"] = "lab/gpu lab render governor atmosphere/gpu terrain/gpu atmosphere terrain gl sim core"
+  may["lab/gpu"] = "lab render governor clouds/gpu clouds atmosphere/gpu terrain/gpu atmosphere terrain gl sim core"
+  may["apps"] = "lab/gpu lab render governor clouds/gpu clouds atmosphere/gpu terrain/gpu atmosphere terrain gl sim core"
   # Rooms that draw, and so may include GL headers.
-  draws["gl"] = draws["atmosphere/gpu"] = draws["terrain/gpu"] = 1
+  draws["gl"] = draws["atmosphere/gpu"] = draws["clouds/gpu"] = draws["terrain/gpu"] = 1
   draws["render"] = draws["lab/gpu"] = draws["apps"] = 1
   # The atmosphere surface-lighting API, for the terrain that it lights.
   api["terrain/gpu", "atmosphere/shaders/surface_lighting.glsl"] = 1

@@ -42,6 +42,7 @@ Body load_body(const std::filesystem::path& file) {
     }
   }
   if (root.has("terrain")) body.terrain = root.raw("terrain");
+  if (root.has("clouds")) body.clouds = root.raw("clouds");
   root.string_or("source", "");  // where the values come from, for the reader
   root.finish();
   return body;

@@ -42,6 +42,9 @@ struct Body {
   // The "terrain" object, parsed by the terrain module; null for a smooth
   // ellipsoid.
   nlohmann::json terrain;
+  // The "clouds" object, parsed by the clouds module; null for a body
+  // without clouds.
+  nlohmann::json clouds;
 
   bool has_atmosphere() const { return !atmosphere.is_null(); }
 };

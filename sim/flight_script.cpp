@@ -150,6 +150,7 @@ void read_image(JsonObject& root, FlightScript& s) {
   s.terrain_shadows = image.boolean_or("terrain_shadows", true);
   s.stars = image.boolean_or("stars", true);
   s.glare = image.boolean_or("glare", false);
+  s.clouds = image.boolean_or("clouds", false);
   image.finish();
 }
 

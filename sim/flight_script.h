@@ -60,6 +60,9 @@ struct FlightScript {
   // "image": {"glare": true}: the eye's glare around the sun (render/frame.h's
   // FrameOptions::glare), as fly draws it; off unless given (or capture --glare).
   bool glare = false;
+  // "image": {"clouds": true}: the body's cloud layer (its file's "clouds",
+  // render/frame.h's FrameOptions::clouds); off unless given.
+  bool clouds = false;
   double frame_rate = 0;
   double exposure = 1;  // multiplies radiance before tone mapping; the default for keyframes
   // "exposure": "auto": each frame's own, from its mean luminance

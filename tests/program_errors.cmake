@@ -45,3 +45,14 @@ expect_failure(old_gl 1 ENV "MESA_GL_VERSION_OVERRIDE=3.3"
 # A schedule that is none of software, plain or auto.
 expect_failure(bad_schedule 2 ARGS capture --flight "${FLIGHT}" --schedule fast
                FRAGMENTS "--schedule" "fast")
+# A body whose clouds are out of range: the file and the field, before any
+# frame.
+file(READ "$ENV{PLANET_ROOT}/data/planets/earth.json" earth)
+string(JSON earth SET "${earth}" clouds extinction_per_m "-0.04")
+file(WRITE "${WORK}/cloudy_earth.json" "${earth}")
+file(WRITE "${WORK}/cloudy.json" "{\"body\": \"${WORK}/cloudy_earth.json\",
+  \"image\": {\"width\": 64, \"height\": 32, \"clouds\": true},
+  \"frame_rate\": 1, \"sun\": {\"elevation_deg\": 10, \"azimuth_deg\": 0},
+  \"keyframes\": [{\"time\": 0, \"lat_deg\": 0, \"lon_deg\": 0, \"height_m\": 2}]}")
+expect_failure(bad_clouds 2 ARGS capture --flight "${WORK}/cloudy.json"
+               FRAGMENTS "cloudy_earth.json" "clouds.extinction_per_m" "out of range")

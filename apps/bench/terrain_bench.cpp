@@ -445,5 +445,42 @@ BENCHMARK(BM_PilotsWorldFrame)
     ->Unit(benchmark::kMillisecond)
     ->Iterations(3);
 
+// Earth's clouds at 480x270 under hillaire (range(0): 0 from 500 m over
+// the sea, 1 inside the layer at 3 km, 2 from 400 km), the sun 35 deg up,
+// at the default quality (range(1) 0) or a cheap one (1: 16 steps, 2
+// toward the sun, 4 octaves): the clouds pass's wall time against the
+// sky's (hillaire's sky and space passes) in the same frames, and their
+// ratio (docs/clouds.md#cost).
+void BM_CloudsFrame(benchmark::State& state) {
+  auto context = GlContext::create_headless();
+  Body body = earth();
+  FrameRenderer renderer(480, 270);
+  FrameOptions options;
+  options.antialiasing = 4;
+  options.synchronous_timing = true;
+  options.clouds = true;
+  if (state.range(1) == 1) options.cloud_quality = {16, 2, 4};
+  renderer.set_options(options);
+  renderer.set_body(body, load_atmosphere(body), make_technique("hillaire"));
+  Geodesy geodesy(body.shape);
+  const double heights[3] = {500.0, 3000.0, 400e3};
+  const double pitches[3] = {10.0, 0.0, -45.0};
+  const Geodetic place{glm::radians(30.0), glm::radians(-40.0), heights[state.range(0)]};
+  Camera camera = geodesy.camera_at(place, glm::radians(60.0),
+                                    glm::radians(pitches[state.range(0)]), glm::radians(70.0));
+  const glm::dvec3 sun = geodesy.body_direction(place, glm::radians(35.0), glm::radians(120.0));
+  set_terrain_wait(renderer, 300.0);
+  renderer.render(camera, sun, 2.0);  // builds the tiles, pays for shader compilation
+  set_terrain_wait(renderer, 0.0);
+  time_frames(state, [&] { return renderer.render(camera, sun, 2.0); },
+              {{"clouds_ms", {"clouds"}}, {"sky_ms", {"sky", "space"}}});
+  state.counters["clouds_over_sky"] = state.counters["clouds_ms"] / state.counters["sky_ms"];
+}
+BENCHMARK(BM_CloudsFrame)
+    ->ArgsProduct({{0, 1, 2}, {0, 1}})
+    ->UseManualTime()
+    ->Unit(benchmark::kMillisecond)
+    ->Iterations(3);
+
 }  // namespace
 }  // namespace planet

@@ -134,8 +134,8 @@ TEST(AirlessFrameGLTest, TheMoonRunsNoAtmospherePass) {
   EXPECT_EQ(passes.ran, (std::vector<std::string>{"surface", "tonemap"}));
   EXPECT_EQ(passes.skipped,
             (std::vector<std::string>{"atmosphere_tables", "fade:frame", "resolve",
-                                      "terrain_shadow", "atmosphere", "antialias", "fade", "stars",
-                                      "exposure", "glare", "smooth_edges"}));
+                                      "terrain_shadow", "atmosphere", "clouds", "antialias", "fade",
+                                      "stars", "exposure", "glare", "smooth_edges"}));
   std::vector<float> hdr = renderer.read_hdr();
   // Top row: space, black; bottom row: the sunlit ground.
   auto luminance = [&](int x, int y_from_bottom) {
@@ -166,8 +166,9 @@ TEST_F(FrameGLTest, EveryOptionsPassRunsInTheFramesOrder) {
   PassesBy passes = passes_by(renderer_->render(view.camera, view.sun_dir_body, 10.0));
   EXPECT_EQ(passes.ran, (std::vector<std::string>{"surface", "resolve", "sky", "antialias", "stars",
                                                   "exposure", "glare", "tonemap", "smooth_edges"}));
-  // A smooth body casts no shadow; no switch fades.
-  EXPECT_EQ(passes.skipped, (std::vector<std::string>{"fade:frame", "terrain_shadow", "fade"}));
+  // A smooth body casts no shadow; no switch fades; no clouds unless asked.
+  EXPECT_EQ(passes.skipped,
+            (std::vector<std::string>{"fade:frame", "terrain_shadow", "clouds", "fade"}));
 
   std::unique_ptr<AtmosphereTechnique> previous = make_technique("raymarch");
   previous->update(load_atmosphere(body_));
