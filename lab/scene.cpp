@@ -142,11 +142,13 @@ std::vector<Scene> eclipse_scenes() {
   Body body = scene_body(total);
   Geodesy geodesy(body.shape);
   double sun_radius = load_atmosphere(body).sun_angular_radius;
-  // The camera low and pitched up a little: the ring of light at the
-  // horizon and the dark sky above it. The sun's direction from the camera
-  // itself: from the Earth's centre it is 9 arcsec off, 2 % of its radius.
+  // The camera on the ground, its 60 degree field pitched up 31 degrees:
+  // the horizon's ring of light along the bottom edge, sky above it and no
+  // ground (the techniques are judged on their sky). The sun's direction
+  // from the camera itself: from the Earth's centre it is 9 arcsec off, 2 %
+  // of its radius.
   auto place = [&](Scene s, Geodetic g) {
-    s.camera = geodesy.camera_at(g, 0.0, glm::radians(10.0), glm::radians(60.0));
+    s.camera = geodesy.camera_at(g, 0.0, glm::radians(31.0), glm::radians(60.0));
     s.sun_dir_body = glm::normalize(sun_body - s.camera.pos_body);
     return s;
   };
