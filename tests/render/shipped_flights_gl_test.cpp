@@ -54,7 +54,7 @@ TEST_P(ShippedFlightGLTest, NoFrameIsBlackAndNoKeyframeIsUnderground) {
 INSTANTIATE_TEST_SUITE_P(Flights, ShippedFlightGLTest,
                          ::testing::Values("alps_shafts", "alps_sunset", "ascent",
                                            "asteroid_landing", "alps_nightfall", "coast_sunset",
-                                           "eros_landing", "earth_night_lights",
+                                           "eclipse_texas", "eros_landing", "earth_night_lights",
                                            "earth_orbit_terminator", "everest_dawn",
                                            "governed_ascent", "mars_crater_sunset", "mars_sunset",
                                            "moon_descent", "olympus_mons", "sea_glint_orbit",
