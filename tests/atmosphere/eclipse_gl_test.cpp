@@ -1,17 +1,25 @@
 // The Moon's shadow in the frame (FrameRenderer::set_moon): the raymarch
 // and hillaire techniques multiply the sun at each sample of their marches
 // by the visible share there (occluded_sun.glsl), as the ground truth does.
+#include "core/data_paths.h"
 #include "gl/context.h"
 #include "lab/accuracy.h"
 #include "lab/gpu/scene_render.h"
 #include "lab/reference_cache.h"
 #include "lab/scene.h"
+#include "render/capture.h"
+#include "terrain/ground.h"
 #include "tests/atmosphere/accuracy_guard.h"
 
+#include <fmt/format.h>
 #include <gtest/gtest.h>
 
 #include <array>
 #include <cstdio>
+#include <fstream>
+
+#include <unistd.h>
+#include <nlohmann/json.hpp>
 
 #include "tests/unity_id.h"
 
@@ -116,6 +124,32 @@ TEST(EclipseGLTest, HillairesSkyTakesTheShareAlongItsRaysAndHoldsThePartialPhase
       }
     }
   }
+}
+
+TEST(EclipseGLTest, TheTexasFlightsExposureFollowsTheSkyIntoTotality) {
+  // The shipped flight's first frame (18:20 UTC, the partial phase) and
+  // frame 14 (18:34, totality): the automatic exposure follows the sky up,
+  // no day-night switch, so that the stars come out. Measured: 20.7 and
+  // 501 at 96x54.
+  const GroundHeight ground = terrain_ground();
+  FlightScript script = load_flight_script(data_dir() / "flights" / "eclipse_texas.json", ground);
+  auto context = GlContext::create_headless();
+  auto dir =
+      std::filesystem::temp_directory_path() / ("planet-eclipse-texas-" + std::to_string(getpid()));
+  auto exposure = [&](int frame) {
+    CaptureOptions options;
+    options.out_dir = dir;
+    options.first_frame = frame;
+    options.end_frame = frame + 1;
+    options.progress = false;
+    run_capture(script, options);
+    std::ifstream in(dir / fmt::format("frame_{:05d}.json", frame));
+    return nlohmann::json::parse(in).at("exposure").get<double>();
+  };
+  double partial = exposure(0), total = exposure(14);
+  std::printf("exposure at 18:20 %.3g, at 18:34 %.3g\n", partial, total);
+  EXPECT_GT(total, 10.0 * partial);
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace PLANET_TEST_ID
