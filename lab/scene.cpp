@@ -145,7 +145,7 @@ std::vector<Scene> eclipse_scenes() {
   // The camera on the ground, its 60 degree field pitched up 31 degrees:
   // the horizon's ring of light along the bottom edge, sky above it and no
   // ground (the techniques are judged on their sky). The sun's direction
-  // from the camera itself: from the Earth's centre it is 9 arcsec off, 2 %
+  // from the camera itself: from the Earth's centre it is up to 9 arcsec off, 1 %
   // of its radius.
   auto place = [&](Scene s, Geodetic g) {
     s.camera = geodesy.camera_at(g, 0.0, glm::radians(31.0), glm::radians(60.0));
