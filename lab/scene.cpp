@@ -1,8 +1,11 @@
 #include "lab/scene.h"
 
 #include "atmosphere/atmosphere_space.h"
+#include "atmosphere/math/shared_math.h"
 #include "core/error.h"
 #include "core/hash.h"
+#include "sim/eclipse.h"
+#include "sim/ephemeris.h"
 #include "sim/geodesy.h"
 
 #include <fmt/format.h>
@@ -106,6 +109,68 @@ std::vector<Scene> canonical_scenes() {
   return scenes;
 }
 
+namespace {
+
+double sun_share(const Scene& scene, double sun_radius, const glm::dvec3& pos_body) {
+  if (scene.moon_radius <= 0.0) return 1.0;
+  return shared::occluded_sun_fraction(scene.sun_dir_body, sun_radius,
+                                       scene.moon_pos_body - pos_body, scene.moon_radius)
+      .g;
+}
+
+}  // namespace
+
+double scene_sun_share(const Scene& scene, const glm::dvec3& pos_body) {
+  return sun_share(scene, load_atmosphere(scene_body(scene)).sun_angular_radius, pos_body);
+}
+
+std::vector<Scene> eclipse_scenes() {
+  const EclipseConstants constants;
+  UtcSeconds utc = solar_eclipse(parse_utc("2024-04-08T18:00:00Z", "eclipse scene"))->greatest;
+  std::optional<SolarEclipse> eclipse = solar_eclipse(utc);
+  glm::dmat3 itrs = itrs_from_gcrs(utc);
+  glm::dvec3 sun_body = itrs * sun_pos_gcrs(utc);
+  Scene total;
+  total.name = "earth_eclipse_total";
+  total.description =
+      "2024-04-08 at greatest eclipse, on the ground at the centre of totality, looking north: "
+      "the horizon's glow";
+  total.body = "earth";
+  total.exposure = 2e4;
+  total.moon_pos_body = itrs * moon_pos_gcrs(utc);
+  total.moon_radius = constants.moon_k_mean * constants.earth_radius;
+  Body body = scene_body(total);
+  Geodesy geodesy(body.shape);
+  double sun_radius = load_atmosphere(body).sun_angular_radius;
+  // The camera on the ground, its 60 degree field pitched up 31 degrees:
+  // the horizon's ring of light along the bottom edge, sky above it and no
+  // ground (the techniques are judged on their sky). The sun's direction
+  // from the camera itself: from the Earth's centre it is up to 9 arcsec off, 1 %
+  // of its radius.
+  auto place = [&](Scene s, Geodetic g) {
+    s.camera = geodesy.camera_at(g, 0.0, glm::radians(31.0), glm::radians(60.0));
+    s.sun_dir_body = glm::normalize(sun_body - s.camera.pos_body);
+    return s;
+  };
+  total = place(total, {eclipse->point.lat, eclipse->point.lon, 2.0});
+  // Due north, the share rises from 0 at the umbra's edge: the latitude
+  // where it is 10 %, by bisection.
+  Scene partial = total;
+  partial.name = "earth_eclipse_partial";
+  partial.description =
+      "2024-04-08 at greatest eclipse, on the ground north of totality where 10 % of the sun's "
+      "flux is left, looking north";
+  partial.exposure = 100.0;
+  double lo = eclipse->point.lat, hi = lo + glm::radians(20.0);
+  for (int i = 0; i < 60; ++i) {
+    double mid = 0.5 * (lo + hi);
+    Scene s = place(partial, {mid, eclipse->point.lon, 2.0});
+    (sun_share(s, sun_radius, s.camera.pos_body) < 0.1 ? lo : hi) = mid;
+  }
+  partial = place(partial, {lo, eclipse->point.lon, 2.0});
+  return {total, partial};
+}
+
 PathBudget lab_reference_paths(const Scene& scene) {
   return PathBudget(scene.name == "earth_noon_dense50" && scene.max_order != 1 ? 2048 : 8192);
 }
@@ -135,6 +200,11 @@ Scene find_scene(const std::string& name) {
   for (const Scene& s : canonical_scenes()) {
     if (s.name == name) return s;
     known += (known.empty() ? "" : ", ") + s.name;
+  }
+  // Only then the eclipse scenes, which ask the ephemeris.
+  for (const Scene& s : eclipse_scenes()) {
+    if (s.name == name) return s;
+    known += ", " + s.name;
   }
   throw InputError(fmt::format("'{}' is not a canonical scene ({})", name, known));
 }
@@ -220,6 +290,11 @@ ReferenceView reference_view(const Scene& scene, const Body& body, const Atmosph
   glm::dvec3 scale = atmosphere_scale(body.shape, model.bottom_radius);
   view.camera_atmo = scale * scene.camera.pos_body;
   view.sun_dir_atmo = glm::normalize(scale * scene.sun_dir_body);
+  // The Moon carried into atmosphere space as every point is, so that it
+  // stands where it did relative to each; its radius by the same k (its
+  // angular size kept).
+  view.moon_centre_atmo = scale * scene.moon_pos_body;
+  view.moon_radius = scale.x * scene.moon_radius;
   // The frame's own rays, pixel for pixel.
   view.ray_from_ndc =
       atmo_ray_from_ndc(scale, scene.camera, double(scene.width) / double(scene.height));

@@ -41,6 +41,10 @@ struct Scene {
   // The orders of scattering its ground truth sums: 0 all of them, 1 single
   // scattering alone, N up to N events a path (reference --max-order).
   int max_order = 0;
+  // The Moon before the sun (eclipse scenes): its centre in the body frame
+  // and its radius, metres; none while the radius is 0.
+  glm::dvec3 moon_pos_body{0.0};
+  double moon_radius = 0;
 
   // Seeds the path tracer's random streams: a hash of the name.
   uint64_t seed() const;
@@ -60,7 +64,19 @@ Scene placed(Scene scene, const ScenePlacement& placement);
 
 // Every canonical scene, at its default size (128x64).
 std::vector<Scene> canonical_scenes();
-// A canonical scene by name; InputError naming the known ones otherwise.
+// The eclipse scenes of 2024-04-08 at greatest eclipse (18:17 UTC), with
+// the Sun and the Moon where the ephemeris puts them (sim/ephemeris.h):
+// earth_eclipse_total, on the ground at the centre of totality looking
+// north toward the horizon's glow, and earth_eclipse_partial, due north of
+// it where the visible share of the sun's flux (green) is 10 %.
+// Apart from the canonical scenes, whose table they leave as it stands.
+std::vector<Scene> eclipse_scenes();
+// The visible share (green) of the sun's flux at a point of a scene's
+// body frame, with its Moon; 1 without one.
+double scene_sun_share(const Scene& scene, const glm::dvec3& pos_body);
+
+// A canonical or eclipse scene by name; InputError naming the known ones
+// otherwise.
 Scene find_scene(const std::string& name);
 // The same, drawn at another size (the tests' 32x16).
 Scene find_scene(const std::string& name, int width, int height);

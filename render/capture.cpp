@@ -12,6 +12,7 @@
 #include "governor/governor.h"
 #include "render/frame.h"
 #include "render/technique_switch.h"
+#include "sim/eclipse.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -426,6 +427,14 @@ CaptureResult run_capture(const FlightScript& script, const CaptureOptions& opti
       switcher->apply(*decision, *atmosphere);
     }
     renderer.set_star_orientation(body_from_icrf(script.body, path.utc_at(t)));
+    // Over the Earth with a clock, the Moon where it really is: before the
+    // sun in an eclipse, for the techniques that take it.
+    if (script.body.ephemeris.model == SunEphemeris::Model::kEarth) {
+      if (std::optional<glm::dvec3> moon = path.companion_pos_at(t)) {
+        const EclipseConstants c;
+        renderer.set_moon(*moon, c.moon_k_mean * c.earth_radius);
+      }
+    }
     FrameStats stats = renderer.render(camera, sun, exposure);
     result.passes.add(stats.passes);
     exposure = renderer.last_exposure();

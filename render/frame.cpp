@@ -423,6 +423,10 @@ void FrameRenderer::draw_atmosphere(const Frame& f, AtmosphereTechnique& techniq
   sky.atmo_ray_from_ndc =
       glm::mat3(atmo_ray_from_ndc(scale, f.camera, double(width_) / double(height_)));
   sky.sun_dir_atmo = f.sun_dir_atmo;
+  // Carried into atmosphere space as every point is (lab/scene.cpp's
+  // reference_view does the same for the ground truth).
+  sky.moon_centre_atmo = glm::vec3(scale * moon_pos_body_);
+  sky.moon_radius = float(scale.x * moon_radius_);
   sky.near = float(f.camera.near);
   // A lower bound of every distance the technique meets in front of a
   // surface: the nearest drawn tile, less the depth of the lowest ground

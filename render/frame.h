@@ -145,6 +145,12 @@ class FrameRenderer {
   // Turns the star catalogue's ICRF into the body's frame for the next
   // frames (body_from_icrf).
   void set_star_orientation(const glm::dmat3& body_from_icrf) { body_from_icrf_ = body_from_icrf; }
+  // The Moon before the sun for the next frames: its centre in the body
+  // frame and its radius, metres (0: none, the default).
+  void set_moon(const glm::dvec3& pos_body, double radius) {
+    moon_pos_body_ = pos_body;
+    moon_radius_ = radius;
+  }
 
   const TerrainStats& terrain_stats() const { return terrain_stats_; }
   TerrainRenderer* terrain() { return terrain_.get(); }
@@ -206,6 +212,8 @@ class FrameRenderer {
   // resolved into surface_ and depth_ (made by set_options).
   std::unique_ptr<SurfaceAntialiasing> multisampled_;
   Buffer atmosphere_block_;
+  glm::dvec3 moon_pos_body_{0.0};
+  double moon_radius_ = 0;
   FullscreenPass tonemap_pass_;
   std::unique_ptr<TerrainRenderer> terrain_;
   TerrainStats terrain_stats_;

@@ -48,6 +48,12 @@ struct SkyFrame {
   // view depth.
   glm::mat3 atmo_ray_from_ndc{1.0f};
   glm::vec3 sun_dir_atmo{0, 0, 1};
+  // The Moon before the sun (an eclipse): its centre in atmosphere space
+  // and its radius, metres; none while the radius is 0. A technique that
+  // takes it multiplies the sun at each point by its visible share there
+  // (occluded_sun.glsl).
+  glm::vec3 moon_centre_atmo{0.0f};
+  float moon_radius = 0.0f;
   float near = 0.1f;  // view depth at reversed-Z depth 1
   // No opaque surface drawn this frame lies nearer to the camera than this
   // (atmosphere-space metres; +inf when none was drawn); 0 when unknown. A

@@ -44,6 +44,8 @@ Real forward_gain_lookup(IN(Atmosphere) atmosphere, Real nu, Real tau);
 Real mie_column_lookup(IN(Atmosphere) atmosphere, Real r, Real mu);
 // The CPU's skies have no terrain.
 Real terrain_sun_visibility(IN(Real3)) { return Real(1.0); }
+// Nor a Moon.
+Real3 eclipse_sun_share(IN(Real3), IN(Real3)) { return Real3(1.0); }
 
 // In this order, each file using the ones before it.
 // clang-format off

@@ -16,6 +16,7 @@ using namespace glm;
 #include "atmosphere/shaders/lut_coordinates.glsl"
 #include "atmosphere/shaders/transmittance.glsl"
 #include "atmosphere/shaders/sun.glsl"
+#include "atmosphere/shaders/occluded_sun.glsl"
 // clang-format on
 #undef IN
 #undef OUT

@@ -61,6 +61,11 @@ void transmittance_lut_r_mu_from_uv(const Atmosphere& atmosphere, Real u, Real v
 // sun.glsl
 Real3 sun_disk_radiance(const Atmosphere& atmosphere, Real cos_angle);
 
+// occluded_sun.glsl
+Real circle_overlap_area(Real a, Real b, Real d);
+Real3 sun_flux_within(Real x);
+Real3 occluded_sun_fraction(Real3 sun_dir, Real sun_radius, Real3 moon_centre, Real moon_radius);
+
 // The model as the shared functions see it.
 Atmosphere to_shared(const AtmosphereModel& model);
 

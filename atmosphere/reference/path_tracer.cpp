@@ -142,6 +142,32 @@ double transmittance_to_top(const DepthTable& table, const glm::dvec3& p, const 
   return std::exp(-table.to_top(r, mu));
 }
 
+// The visible share of the sun's flux at p in a channel of this
+// wavelength, with the Moon of `options` in front of it: the shared
+// function's three channels (its limb darkening's wavelengths, sun.glsl)
+// interpolated linearly in wavelength and held beyond them.
+double sun_share(const TraceOptions& options, double sun_angular_radius, double wavelength_nm,
+                 const glm::dvec3& p, const glm::dvec3& sun_dir) {
+  glm::dvec3 share = shared::occluded_sun_fraction(
+      sun_dir, sun_angular_radius, options.moon_centre_atmo - p, options.moon_radius);
+  // R, G, B at 680, 550, 440 nm.
+  if (wavelength_nm >= 680.0) return share.r;
+  if (wavelength_nm >= 550.0) return glm::mix(share.g, share.r, (wavelength_nm - 550.0) / 130.0);
+  if (wavelength_nm >= 440.0) return glm::mix(share.b, share.g, (wavelength_nm - 440.0) / 110.0);
+  return share.b;
+}
+
+bool has_moon(const TraceOptions& options) { return options.moon_radius > 0.0; }
+
+// Whether the ray o + t d meets the Moon (and so sees its dark side, not
+// the sun behind it).
+bool moon_hides(const TraceOptions& options, const glm::dvec3& o, const glm::dvec3& d) {
+  double t_near, t_far;
+  return has_moon(options) &&
+         shared::ray_sphere(o - options.moon_centre_atmo, d, options.moon_radius, t_near, t_far) &&
+         t_far > 0.0;
+}
+
 // The share of that table's choice spread evenly along the segment, so that
 // light the table's cells missed is still reached.
 constexpr double kEvenShare = 0.1;
@@ -156,7 +182,7 @@ constexpr double kEvenShare = 0.1;
 // edges, and lands where the light is.
 double sun_along_segment(const DepthTable& table, const glm::dvec3& start, const glm::dvec3& dir,
                          const SegmentDepth& depth, const glm::dvec3& sun_dir, double cos_alpha,
-                         double u, Rng& rng) {
+                         const TraceOptions& options, double u, Rng& rng) {
   const Medium& m = table.medium();
   const MediumChannel& c = table.channel();
   double nu_centre = glm::dot(dir, sun_dir);
@@ -187,8 +213,11 @@ double sun_along_segment(const DepthTable& table, const glm::dvec3& start, const
   double nu = glm::dot(dir, to_sun);
   double scattering = co.scattering_rayleigh * shared::rayleigh_phase(nu) +
                       co.scattering_mie * m.mie_phase_value(nu);
-  return std::exp(-depth.at(t)) * scattering * c.solar_irradiance *
-         transmittance_to_top(table, p, to_sun) / pdf;
+  double light = std::exp(-depth.at(t)) * scattering * c.solar_irradiance *
+                 transmittance_to_top(table, p, to_sun) / pdf;
+  if (has_moon(options))
+    light *= sun_share(options, m.sun_angular_radius, c.wavelength_nm, p, sun_dir);
+  return light;
 }
 
 }  // namespace
@@ -208,7 +237,8 @@ double trace_path(const DepthTable& table, glm::dvec3 origin, glm::dvec3 dir,
     Segment s = atmosphere_segment(m, origin, dir);
     if (!s.inside) {
       radiance += weight * options.environment_radiance;
-      if (order == 1 && options.sun && glm::dot(dir, sun_dir) >= cos_alpha) {
+      if (order == 1 && options.sun && glm::dot(dir, sun_dir) >= cos_alpha &&
+          !moon_hides(options, origin, dir)) {
         radiance += weight * c.solar_irradiance / solid_angle;
       }
       return radiance;
@@ -222,7 +252,7 @@ double trace_path(const DepthTable& table, glm::dvec3 origin, glm::dvec3 dir,
     // is gathered, and where the path goes on from.
     glm::dvec2 segment_numbers = sampler.pair();
     if (options.sun && opacity > 0.0) {
-      radiance += weight * sun_along_segment(table, start, dir, depth, sun_dir, cos_alpha,
+      radiance += weight * sun_along_segment(table, start, dir, depth, sun_dir, cos_alpha, options,
                                              segment_numbers.x, rng);
     }
     glm::dvec3 end = start + length * dir;
@@ -231,13 +261,19 @@ double trace_path(const DepthTable& table, glm::dvec3 origin, glm::dvec3 dir,
       glm::dvec3 to_sun = reference::sample_cone(sun_dir, cos_alpha, rng);
       double cos_sun = glm::dot(normal, to_sun);
       if (cos_sun > 0.0) {
-        radiance += weight * transmittance * c.solar_irradiance * c.ground_albedo / reference::kPi *
-                    cos_sun * transmittance_to_top(table, normal * m.bottom_radius, to_sun);
+        glm::dvec3 ground = normal * m.bottom_radius;
+        double light = transmittance * c.solar_irradiance * c.ground_albedo / reference::kPi *
+                       cos_sun * transmittance_to_top(table, ground, to_sun);
+        if (has_moon(options)) {
+          light *= sun_share(options, m.sun_angular_radius, c.wavelength_nm, ground, sun_dir);
+        }
+        radiance += weight * light;
       }
     }
     if (!s.hits_ground) {
       radiance += weight * transmittance * options.environment_radiance;
-      if (order == 1 && options.sun && glm::dot(dir, sun_dir) >= cos_alpha) {
+      if (order == 1 && options.sun && glm::dot(dir, sun_dir) >= cos_alpha &&
+          !moon_hides(options, origin, dir)) {
         radiance += weight * transmittance * c.solar_irradiance / solid_angle;
       }
     }

@@ -55,6 +55,9 @@ struct ReferenceView {
   // the zenith (top) to the nadir.
   glm::dmat3 ray_from_ndc{1.0};
   glm::dmat3 frame{1.0};
+  // The Moon before the sun (TraceOptions): none while its radius is 0.
+  glm::dvec3 moon_centre_atmo{0.0};
+  double moon_radius = 0;
 
   // Unit ray direction through the centre of pixel (x, y), rows top-down.
   glm::dvec3 ray_dir(int x, int y) const;
@@ -68,6 +71,13 @@ struct TraceOptions {
   // furnace); the sun is then left out.
   double environment_radiance = 0;
   bool sun = true;
+  // The Moon in front of the sun (an eclipse), in atmosphere space; none
+  // while its radius is 0. Every sunlit term at a point (the air's and the
+  // ground's) takes the visible share of the limb-darkened disk there
+  // (occluded_sun.glsl) at the channel's wavelength, and the disk seen
+  // directly is hidden where the Moon's sphere stands before it.
+  glm::dvec3 moon_centre_atmo{0.0};
+  double moon_radius = 0;
 };
 
 // The radiance (per nm, in the units of the solar irradiance) arriving at

@@ -57,6 +57,9 @@ ReferenceImage render_reference(const Medium& m, const ReferenceView& view,
   double r_min = m.bottom_radius + 1.0;
   if (glm::length(camera) < r_min) camera *= r_min / glm::length(camera);
   glm::dvec3 sun = glm::normalize(view.sun_dir_atmo);
+  TraceOptions trace = settings.trace;
+  trace.moon_centre_atmo = view.moon_centre_atmo;
+  trace.moon_radius = view.moon_radius;
   const ColumnTable columns(m);
   std::vector<DepthTable> tables;
   for (const MediumChannel& c : m.channels) tables.emplace_back(columns, c);
@@ -102,7 +105,7 @@ ReferenceImage render_reference(const Medium& m, const ReferenceView& view,
           for (int i = sums.done[lane]; i < until[lane]; ++i) {
             if (cancelled()) return;
             reference::PathSampler sampler(seed, uint32_t(i));
-            sum += trace_path(table, camera, dir, sun, settings.trace, sampler);
+            sum += trace_path(table, camera, dir, sun, trace, sampler);
           }
         }
       }

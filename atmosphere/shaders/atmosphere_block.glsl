@@ -17,6 +17,7 @@
 #include "atmosphere/shaders/lut_coordinates.glsl"
 #include "atmosphere/shaders/transmittance.glsl"
 #include "atmosphere/shaders/sun.glsl"
+#include "atmosphere/shaders/occluded_sun.glsl"
 
 layout(std140, binding = 0) uniform AtmosphereBlock {
   vec4 u_radii;  // bottom, top, mie g, sun angular radius

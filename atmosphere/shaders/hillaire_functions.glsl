@@ -28,6 +28,9 @@
 //   Real terrain_sun_visibility(IN(Real3) p)
 //       1 where the terrain leaves the sun in view of the point p, 0 in
 //       its shadow (terrain_shadow.glsl; 1 on the CPU and in the LUTs)
+//   Real3 eclipse_sun_share(IN(Real3) p, IN(Real3) sun_dir)
+//       the visible share of the sun at p with the Moon before it
+//       (occluded_sun.glsl; 1 but in an eclipse, and on the CPU)
 // and, with TERRAIN_SHADOW_LOSS defined, a Real3 terrain_shadow_loss that
 // the sun's light the terrain took away along the ray is added to.
 // On the GPU these sample the LUTs; on the CPU they integrate directly or
@@ -317,6 +320,11 @@ void accumulate_segment_in(IN(Atmosphere) atmosphere, IN(Real3) o, IN(Real3) d, 
         source = max(source, Real3(0.0));
       }
     }
+    // In an eclipse, the Moon's share of the sun at p, for the sun's light
+    // and the light scattered more than once alike: as if the shadow were
+    // as wide as that light's reach (an approximation: docs/eclipses.md).
+    // Last, and 1 exactly with no Moon, so that it changes no other sky.
+    source *= eclipse_sun_share(p, sun_dir);
   }
   Real3 weight = throughput * ds * one_minus_exp_over_x3(extinction * ds);
   luminance += weight * source;

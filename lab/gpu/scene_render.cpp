@@ -15,6 +15,7 @@ ImageRGB render(const Scene& scene, const std::string& technique, bool sky_light
   options.surface_sky_light = sky_light;
   renderer.set_options(options);
   renderer.set_body(body, model, make_technique(technique));
+  renderer.set_moon(scene.moon_pos_body, scene.moon_radius);
   renderer.render(scene.camera, scene.sun_dir_body, scene.exposure);
   return image_from_gl(scene.width, scene.height, renderer.read_hdr());
 }

@@ -441,6 +441,63 @@ TEST(PathTracerTest, ViewRaysAreFrameRendererRays) {
   EXPECT_GT(glm::dot(view.ray_dir(1, 0), scale), glm::dot(view.ray_dir(1, 2), scale));
 }
 
+// A Moon so far away (and so large) that its disk covers the same part of
+// the sun from every point a path visits, d sun radii from the sun's centre
+// with radius rho sun radii: every sunlit term then takes the same share.
+TraceOptions far_moon(const glm::dvec3& sun, double sun_radius, double d, double rho) {
+  glm::dvec3 side = glm::normalize(glm::cross(sun, glm::dvec3(0, 1, 0)));
+  double distance = 1e15;
+  TraceOptions o;
+  o.moon_centre_atmo =
+      distance * (std::cos(d * sun_radius) * sun + std::sin(d * sun_radius) * side);
+  o.moon_radius = distance * std::sin(rho * sun_radius);
+  return o;
+}
+
+TEST(PathTracerTest, EverySunlitTermTakesTheMoonsShareOfTheSun) {
+  // The same paths (the Moon draws no numbers) with and without the Moon:
+  // the air's and the ground's sunlight, at every order, scale by the
+  // share, so the radiances' ratio is the share in each channel (R, G, B
+  // at the limb darkening's own 680, 550, 440 nm).
+  AtmosphereModel model = earth_model();
+  Medium medium = make_medium(model, ReferenceMode::kRgb);
+  const ColumnTable table(medium);
+  glm::dvec3 sun = glm::normalize(glm::dvec3(0.5, 0.0, std::sqrt(0.75)));
+  glm::dvec3 origin(0, 0, 6360e3 + 10e3);
+  TraceOptions eclipsed = far_moon(sun, model.sun_angular_radius, 0.6, 1.05);
+  glm::dvec3 share = shared::occluded_sun_fraction(
+      sun, model.sun_angular_radius, eclipsed.moon_centre_atmo - origin, eclipsed.moon_radius);
+  ASSERT_GT(share.g, 0.05);
+  ASSERT_LT(share.g, 0.5);
+  for (glm::dvec3 dir : {glm::dvec3(0.0, 0.7071, 0.7071), glm::dvec3(0.0, 0.6, -0.8)}) {
+    for (int channel = 0; channel < 3; ++channel) {
+      RadianceEstimate clear =
+          estimate_radiance(table, size_t(channel), origin, dir, sun, TraceOptions(), 200, 7);
+      RadianceEstimate dim =
+          estimate_radiance(table, size_t(channel), origin, dir, sun, eclipsed, 200, 7);
+      EXPECT_NEAR(dim.mean / clear.mean, share[channel], 1e-6 * share[channel])
+          << "channel " << channel << " looking " << dir.z;
+    }
+  }
+}
+
+TEST(PathTracerTest, TheMoonHidesTheSunsDiskAndTheUmbraIsDark) {
+  // Looking at the sun from inside the umbra: no disk, and with no sky
+  // outside the shadow (a Moon that covers the sun from everywhere) no
+  // light at all; without the Moon, the disk.
+  AtmosphereModel model = earth_model();
+  Medium medium = make_medium(model, ReferenceMode::kRgb);
+  const ColumnTable table(medium);
+  glm::dvec3 sun(0, 0, 1), origin(0, 0, 6360e3 + 2.0);
+  TraceOptions total = far_moon(sun, model.sun_angular_radius, 0.0, 1.05);
+  for (int channel = 0; channel < 3; ++channel) {
+    EXPECT_EQ(estimate_radiance(table, size_t(channel), origin, sun, sun, total, 50, 3).mean, 0.0);
+    EXPECT_GT(
+        estimate_radiance(table, size_t(channel), origin, sun, sun, TraceOptions(), 50, 3).mean,
+        medium.channels[size_t(channel)].solar_irradiance);
+  }
+}
+
 }  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet

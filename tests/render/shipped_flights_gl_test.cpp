@@ -54,12 +54,13 @@ TEST_P(ShippedFlightGLTest, NoFrameIsBlackAndNoKeyframeIsUnderground) {
 INSTANTIATE_TEST_SUITE_P(Flights, ShippedFlightGLTest,
                          ::testing::Values("alps_shafts", "alps_sunset", "ascent",
                                            "asteroid_landing", "clouds_climb", "clouds_orbit",
-                                           "alps_nightfall", "coast_sunset", "eros_landing",
-                                           "earth_night_lights", "earth_orbit_terminator",
-                                           "everest_dawn", "governed_ascent", "mars_crater_sunset",
-                                           "mars_sunset", "moon_descent", "olympus_mons",
-                                           "sea_glint_orbit", "terrain_asteroid", "terrain_earth",
-                                           "terrain_mars", "tycho_landing", "valles_marineris"),
+                                           "alps_nightfall", "coast_sunset", "eclipse_texas",
+                                           "eros_landing", "earth_night_lights",
+                                           "earth_orbit_terminator", "everest_dawn",
+                                           "governed_ascent", "mars_crater_sunset", "mars_sunset",
+                                           "moon_descent", "olympus_mons", "sea_glint_orbit",
+                                           "terrain_asteroid", "terrain_earth", "terrain_mars",
+                                           "tycho_landing", "valles_marineris"),
                          [](const auto& instance) { return instance.param; });
 
 }  // namespace PLANET_TEST_ID

@@ -12,6 +12,14 @@ Real3 ground_order_lookup(IN(Atmosphere) atmosphere, Real mu_s);
 Real forward_gain_lookup(IN(Atmosphere) atmosphere, Real nu, Real tau);
 
 #include "atmosphere/gpu/terrain_shadow.glsl"
+
+// The Moon's centre and radius in the pass's frame (atmosphere space, or
+// the sky-view LUT's local frame); none while the radius is 0 (SkyFrame).
+uniform vec4 u_moon;
+Real3 eclipse_sun_share(IN(Real3) p, IN(Real3) sun_dir) {
+  if (u_moon.w <= 0.0) return Real3(1.0);
+  return occluded_sun_fraction(sun_dir, u_radii.w, u_moon.xyz - p, u_moon.w);
+}
 #include "atmosphere/shaders/sunlight.glsl"
 #include "atmosphere/shaders/ground.glsl"
 #include "atmosphere/shaders/hillaire_luts.glsl"

@@ -299,7 +299,9 @@ void HillaireTechnique::round_sky_view_inputs(FrameState& s) {
   const double bottom = model_.bottom_radius, top = model_.top_radius;
   const glm::dvec3 sun(s.frame.sun_dir_atmo);
   const double lut_altitude = double(s.lut_r) - bottom;
-  const bool rounded = settings_.reuse_passes;
+  // Not in an eclipse: the share hangs on the sun's place to a fraction of
+  // its radius, far finer than the steps.
+  const bool rounded = settings_.reuse_passes && s.frame.moon_radius <= 0.0f;
   sky_view_altitude_ = std::exp2(quantize(
       std::log2(lut_altitude), rounded ? settings_.sky_view_log2_altitude_step : 0.0));
   s.sky_view_r =
@@ -374,11 +376,17 @@ void HillaireTechnique::bound_shaded_pixels(FrameState& s) {
 // (high up, deep space): a frame models no more than it shows.
 std::vector<Pass> HillaireTechnique::frame_passes(FrameState& s) {
   std::vector<Pass> passes;
-  passes.push_back(
-      {.name = "sky_view_lut",
-       .needed = [this] { return lut_weight_ > 0.0; },
-       .inputs = [this, &s] { return PassKey(model_key_).add(s.sky_view_r).add(s.sun_local); },
-       .run = [this, &s] { compute_sky_view_lut(s); }});
+  passes.push_back({.name = "sky_view_lut",
+                    .needed = [this] { return lut_weight_ > 0.0; },
+                    .inputs =
+                        [this, &s] {
+                          return PassKey(model_key_)
+                              .add(s.sky_view_r)
+                              .add(s.sun_local)
+                              .add(s.frame.moon_centre_atmo)
+                              .add(s.frame.moon_radius);
+                        },
+                    .run = [this, &s] { compute_sky_view_lut(s); }});
   passes.push_back({.name = "aerial_perspective",
                     .needed = [this, &s] { return froxels_needed(s); },
                     .inputs = [this, &s] { return froxel_inputs(s); },
@@ -409,10 +417,15 @@ void HillaireTechnique::compute_sky_view_lut(const FrameState& s) {
   program.use();
   glUniform1f(program.uniform("u_camera_r"), s.sky_view_r);
   glUniform3fv(program.uniform("u_sun_dir_local"), 1, glm::value_ptr(s.sun_local));
+  glm::vec3 moon(s.local * glm::dvec3(s.frame.moon_centre_atmo));
+  glUniform4f(program.uniform("u_moon"), moon.x, moon.y, moon.z, s.frame.moon_radius);
   bind_image(0, sky_view_lut_.id(), GL_RGBA16F, false);
-  // Half the columns: each is written to its mirror image too.
+  // Half the columns: each is written to its mirror image too; all of them
+  // in an eclipse, whose shadow has no mirror (sky_view_lut.comp).
   static_assert(shared::kSkyViewLutWidth % 2 == 0, "the sky view's columns pair off");
-  glDispatchCompute(groups(shared::kSkyViewLutWidth / 2), groups(shared::kSkyViewLutHeight), 1);
+  const int columns = s.frame.moon_radius > 0.0f ? shared::kSkyViewLutWidth
+                                                  : shared::kSkyViewLutWidth / 2;
+  glDispatchCompute(groups(columns), groups(shared::kSkyViewLutHeight), 1);
   glMemoryBarrier(kLutBarrier);
 }
 
@@ -436,6 +449,8 @@ PassKey HillaireTechnique::froxel_inputs(const FrameState& s) const {
       .add(glm::vec3(s.camera))
       .add(frame.atmo_ray_from_ndc)
       .add(frame.sun_dir_atmo)
+      .add(frame.moon_centre_atmo)
+      .add(frame.moon_radius)
       .add(float(aerial_range_))
       .add(s.shadow)
       .add(s.shadow ? frame.terrain_shadow.version : 0)
@@ -450,6 +465,8 @@ void HillaireTechnique::compute_aerial_perspective(const FrameState& s) {
   glUniformMatrix3fv(program.uniform("u_ray_from_ndc"), 1, GL_FALSE,
                      glm::value_ptr(frame.atmo_ray_from_ndc));
   glUniform3fv(program.uniform("u_sun_dir"), 1, glm::value_ptr(frame.sun_dir_atmo));
+  glUniform4f(program.uniform("u_moon"), frame.moon_centre_atmo.x, frame.moon_centre_atmo.y,
+              frame.moon_centre_atmo.z, frame.moon_radius);
   glUniform1f(program.uniform("u_range"), float(aerial_range_));
   bind_image(0, aerial_scattering_.id(), GL_RGBA16F, true);
   bind_image(1, aerial_transmittance_.id(), GL_RGBA16F, true);
@@ -530,6 +547,8 @@ void HillaireTechnique::begin_sky(const Program& program, const FrameState& s) {
                      glm::value_ptr(frame.atmo_ray_from_ndc));
   glUniform3fv(program.uniform("u_sun_dir"), 1, glm::value_ptr(frame.sun_dir_atmo));
   glUniform1f(program.uniform("u_near"), frame.near);
+  glUniform4f(program.uniform("u_moon"), frame.moon_centre_atmo.x, frame.moon_centre_atmo.y,
+              frame.moon_centre_atmo.z, frame.moon_radius);
   glUniform2f(program.uniform("u_viewport"), float(frame.width), float(frame.height));
   glUniformMatrix3fv(program.uniform("u_local_from_atmo"), 1, GL_FALSE,
                      glm::value_ptr(glm::mat3(s.local)));

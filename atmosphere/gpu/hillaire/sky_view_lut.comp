@@ -6,7 +6,8 @@
 // The sky is the same on both sides of the sun's vertical plane (the LUT
 // holds no terrain), so that the azimuths phi and -phi, in columns x and
 // W - 1 - x, hold one value: half the columns are marched (phi < 0) and
-// each is written to its mirror image too.
+// each is written to its mirror image too. Not in an eclipse: the Moon's
+// shadow has no such symmetry, and every column is marched.
 #include "atmosphere/gpu/hillaire/hillaire_common.glsl"
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -17,7 +18,9 @@ uniform vec3 u_sun_dir_local;  // (sin, 0, cos) of the sun's zenith angle
 
 void main() {
   ivec2 texel = ivec2(gl_GlobalInvocationID.xy);
-  if (texel.x >= kSkyViewLutWidth / 2 || texel.y >= kSkyViewLutHeight) return;
+  bool mirrored = u_moon.w <= 0.0;
+  int columns = mirrored ? kSkyViewLutWidth / 2 : kSkyViewLutWidth;
+  if (texel.x >= columns || texel.y >= kSkyViewLutHeight) return;
   Atmosphere atmosphere = block_atmosphere();
   float u = (float(texel.x) + 0.5) / float(kSkyViewLutWidth);
   float v = (float(texel.y) + 0.5) / float(kSkyViewLutHeight);
@@ -33,5 +36,7 @@ void main() {
   integrate_along(atmosphere, origin, dir, 0.0, t_end, u_sun_dir_local, SKY_VIEW_STEPS, kSourceSky,
                   kFieldInterpolated, hits_ground, luminance, transmittance, f_ms);
   imageStore(u_output, texel, vec4(luminance, 1.0));
-  imageStore(u_output, ivec2(kSkyViewLutWidth - 1 - texel.x, texel.y), vec4(luminance, 1.0));
+  if (mirrored) {
+    imageStore(u_output, ivec2(kSkyViewLutWidth - 1 - texel.x, texel.y), vec4(luminance, 1.0));
+  }
 }

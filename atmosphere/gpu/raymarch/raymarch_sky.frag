@@ -23,6 +23,15 @@ uniform vec3 u_camera;  // atmosphere space, metres
 uniform mat3 u_ray_from_ndc;
 uniform vec3 u_sun_dir;
 uniform float u_near;
+// The Moon's centre (atmosphere space) and radius; none while the radius
+// is 0 (SkyFrame).
+uniform vec4 u_moon;
+
+// The visible share of the sun at p: 1 but in an eclipse.
+vec3 moon_sun_share(Atmosphere atmosphere, vec3 p) {
+  if (u_moon.w <= 0.0) return vec3(1.0);
+  return occluded_sun_fraction(u_sun_dir, atmosphere.sun_angular_radius, u_moon.xyz - p, u_moon.w);
+}
 
 void main() {
   Atmosphere atmosphere = block_atmosphere();
@@ -71,8 +80,8 @@ void main() {
       vec3 extinction = extinction_at(atmosphere, altitude);
       vec3 transmittance_to_camera = exp(-(optical_depth + 0.5 * extinction * ds));
       optical_depth += extinction * ds;
-      vec3 transmittance_to_sun =
-          sun_visibility(atmosphere, r, dot(p, u_sun_dir) / r) * terrain_sun_visibility(p);
+      vec3 transmittance_to_sun = sun_visibility(atmosphere, r, dot(p, u_sun_dir) / r) *
+                                  terrain_sun_visibility(p) * moon_sun_share(atmosphere, p);
       vec3 scattering =
           atmosphere.rayleigh_scattering *
               profile_density(atmosphere.rayleigh_density, altitude) * phase_r +
@@ -88,13 +97,18 @@ void main() {
   if (depth == 0.0 && hits_ground) {
     float t_ground_near, t_ground_far;
     ray_sphere(camera, dir, atmosphere.bottom_radius, t_ground_near, t_ground_far);
-    surface = atmosphere.solar_irradiance *
-              ground_radiance(atmosphere, camera + t_ground_near * dir, u_sun_dir);
+    vec3 ground = camera + t_ground_near * dir;
+    surface = atmosphere.solar_irradiance * ground_radiance(atmosphere, ground, u_sun_dir) *
+              moon_sun_share(atmosphere, ground);
   }
   radiance += transmittance * surface;
 
   // The limb-darkened sun disk, on open sky only.
-  if (depth == 0.0 && !hits_ground) {
+  float t_moon_near, t_moon_far;
+  bool behind_moon = u_moon.w > 0.0 &&
+                     ray_sphere(camera - u_moon.xyz, dir, u_moon.w, t_moon_near, t_moon_far) &&
+                     t_moon_far > 0.0;
+  if (depth == 0.0 && !hits_ground && !behind_moon) {
     radiance += transmittance * sun_disk_radiance(atmosphere, dot(dir, u_sun_dir));
   }
   // Keep within half-float range for the HDR target.

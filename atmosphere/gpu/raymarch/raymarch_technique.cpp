@@ -49,6 +49,8 @@ void RaymarchTechnique::draw_sky(const SkyFrame& frame) {
   glUniformMatrix3fv(program_.uniform("u_ray_from_ndc"), 1, GL_FALSE,
                      glm::value_ptr(frame.atmo_ray_from_ndc));
   glUniform3fv(program_.uniform("u_sun_dir"), 1, glm::value_ptr(frame.sun_dir_atmo));
+  glUniform4f(program_.uniform("u_moon"), frame.moon_centre_atmo.x, frame.moon_centre_atmo.y,
+              frame.moon_centre_atmo.z, frame.moon_radius);
   glUniform1f(program_.uniform("u_near"), frame.near);
   glUniform2f(program_.uniform("u_viewport"), float(frame.width), float(frame.height));
   if (steps_.terrain_shadows) bind_terrain_shadow(program_, frame.terrain_shadow);
