@@ -93,6 +93,11 @@ TileMesh build_tile(const TerrainSurface& surface, const TileKey& key) {
         const glm::dvec3 color = config.maps ? config.maps->day_color(x) : glm::dvec3(0.0);
         albedo = glm::vec3(
             materials::ground_material(slope, over_sea, latitude, color, bool(config.maps)).albedo);
+        // The fields of light and shade, kilometres across.
+        if (!config.palette.variation.empty()) {
+          albedo = glm::min(albedo * float(albedo_variation(config.palette.variation, x, spacing)),
+                            glm::vec3(1.0f));
+        }
         if (config.maps) {
           alpha = 0.5f + 0.5f * float(materials::ground_image_cover(slope, over_sea, latitude));
         }
