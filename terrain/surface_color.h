@@ -46,6 +46,9 @@ struct SurfacePalette {
   double steep_slope = 0.6;        // 1 - cos(angle to the vertical) at which rock shows fully
   std::vector<AlbedoVariation> variation;  // applied in turn to land (not to sea or snow)
   CraterAlbedo craters;                    // applied to land with the variation
+  // Earth's materials by rule (ground_material.h) on land in the place of
+  // the palette's land colours, the snow line and the steep slopes.
+  bool materials = false;
 };
 
 // The land's albedo (the sea's, where the palette has one, terrain.frag

@@ -204,6 +204,23 @@ double SurfaceMaps::land(const glm::dvec3& dir_body) const {
          b * ((1 - a) * texel(land_, x, y + 1) + a * texel(land_, x + 1, y + 1));
 }
 
+glm::dvec3 SurfaceMaps::day_color(const glm::dvec3& dir_body) const {
+  glm::dvec2 ll = lon_lat(dir_body);
+  double u = (ll.x / (2.0 * glm::pi<double>()) + 0.5) * width_ - 0.5;
+  double v = (0.5 - ll.y / glm::pi<double>()) * height_ - 0.5;
+  double fu = std::floor(u), fv = std::floor(v);
+  int x = int(fu), y = int(fv);
+  double a = u - fu, b = v - fv;
+  auto rgb = [&](int i, int j) {
+    i = ((i % width_) + width_) % width_;
+    j = std::clamp(j, 0, height_ - 1);
+    const uint8_t* p = &day_[(size_t(j) * size_t(width_) + size_t(i)) * 4];
+    return glm::dvec3(p[0], p[1], p[2]) / 255.0;
+  };
+  return (1 - b) * ((1 - a) * rgb(x, y) + a * rgb(x + 1, y)) +
+         b * ((1 - a) * rgb(x, y + 1) + a * rgb(x + 1, y + 1));
+}
+
 double SurfaceMaps::distance_to_coast(const glm::dvec3& dir_body) const {
   glm::dvec2 ll = lon_lat(dir_body);
   int x = int(std::floor((ll.x / (2.0 * glm::pi<double>()) + 0.5) * width_));

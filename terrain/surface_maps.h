@@ -49,6 +49,9 @@ class SurfaceMaps {
   // mask blurred over about two pixels, sampled bilinearly. 0 or 1
   // exactly wherever no coast lies within two pixels.
   double land(const glm::dvec3& dir_body) const;
+  // The day image's colour along a direction, its display values in
+  // [0, 1], sampled bilinearly as the shader samples it (its finest level).
+  glm::dvec3 day_color(const glm::dvec3& dir_body) const;
   // A lower bound on the distance in metres from the direction to the
   // nearest point where land() is neither exactly 0 nor exactly 1.
   double distance_to_coast(const glm::dvec3& dir_body) const;

@@ -302,6 +302,7 @@ TerrainConfig parse_terrain(const Body& body) {
     p.snow_line_equator = a.number_or("snow_line_equator_m", p.snow_line_equator, -1e5, 1e5);
     p.snow_line_pole = a.number_or("snow_line_pole_m", p.snow_line_pole, -1e5, 1e5);
     p.steep_slope = a.number_or("steep_slope", p.steep_slope, 0.01, 1.0);
+    p.materials = a.boolean_or("materials", false);
     if (a.has("variation")) {
       for (JsonObject v : a.objects("variation")) {
         AlbedoVariation layer;

@@ -1,6 +1,7 @@
 #include "terrain/tile_mesh.h"
 
 #include "terrain/cube_sphere.h"
+#include "terrain/ground_material.h"
 #include "terrain/surface_color.h"
 
 #include <glm/gtc/packing.hpp>
@@ -84,6 +85,22 @@ TileMesh build_tile(const TerrainSurface& surface, const TileKey& key) {
       float alpha = 1.0f;
       if (config.maps) {
         alpha = 0.5f + 0.5f * float(map_cover(config.palette, height, slope, latitude));
+      }
+      if (config.palette.materials && !at_sea) {
+        // Earth's land: the materials' rule on the day image's colour
+        // here, whose far field terrain.frag draws by the same rule.
+        const double over_sea = height - config.sea_level.value_or(0.0);
+        const glm::dvec3 color = config.maps ? config.maps->day_color(x) : glm::dvec3(0.0);
+        albedo = glm::vec3(
+            materials::ground_material(slope, over_sea, latitude, color, bool(config.maps)).albedo);
+        // The fields of light and shade, kilometres across.
+        if (!config.palette.variation.empty()) {
+          albedo = glm::min(albedo * float(albedo_variation(config.palette.variation, x, spacing)),
+                            glm::vec3(1.0f));
+        }
+        if (config.maps) {
+          alpha = 0.5f + 0.5f * float(materials::ground_image_cover(slope, over_sea, latitude));
+        }
       }
       TileVertex& v = tile.vertices[size_t(j * N + i)];
       v = {glm::vec3(x - tile.center_body), glm::vec3(target - x), glm::vec3(normal),

@@ -19,6 +19,8 @@ namespace planet {
 constexpr GLuint kSkyIrradianceUnit = 15;
 constexpr GLuint kDayMapUnit = 13;
 constexpr GLuint kNightMapUnit = 14;
+// ground_detail.glsl's finest wavelength, metres: the tiles' centres are given in it.
+constexpr double kDetailFinest = 0.5;
 
 namespace {
 
@@ -181,6 +183,7 @@ void TerrainRenderer::set_uniforms(const Program& program, const Camera& camera,
   // where the body's file gives one; Lambert's elsewhere.
   const std::optional<Regolith>& regolith = surface_->config().regolith;
   glUniform1i(program.uniform("u_regolith"), regolith ? 1 : 0);
+  glUniform1i(program.uniform("u_materials"), surface_->config().palette.materials ? 1 : 0);
   if (regolith) {
     glUniform4f(program.uniform("u_regolith_law"), float(regolith->w), float(regolith->xi),
                 float(regolith->b0), float(regolith->h));
@@ -198,6 +201,8 @@ void TerrainRenderer::draw_tiles(
   const GLint center_body_loc = program.uniform("u_center_body");
   const GLint axis_i_loc = program.uniform("u_axis_i");
   const GLint axis_j_loc = program.uniform("u_axis_j");
+  const GLint detail_cell_loc = program.uniform("u_detail_cell");
+  const GLint detail_frac_loc = program.uniform("u_detail_frac");
   const auto index_count = GLsizei(tile_indices().size());
   for (const auto& [t, g] : tiles) {
     // The one place a body-frame position meets the camera: in double.
@@ -207,6 +212,14 @@ void TerrainRenderer::draw_tiles(
     glUniform3fv(center_body_loc, 1, glm::value_ptr(glm::vec3(g->center_body)));
     glUniform3fv(axis_i_loc, 1, glm::value_ptr(g->axis_i));
     glUniform3fv(axis_j_loc, 1, glm::value_ptr(g->axis_j));
+    if (detail_cell_loc >= 0) {
+      // The centre in the detail's finest wavelengths, split in double
+      // into a cell and a fraction (ground_detail.glsl's precision note).
+      glm::dvec3 cells = g->center_body / kDetailFinest;
+      glm::dvec3 cell = glm::floor(cells);
+      glUniform3i(detail_cell_loc, int(cell.x), int(cell.y), int(cell.z));
+      glUniform3fv(detail_frac_loc, 1, glm::value_ptr(glm::vec3(cells - cell)));
+    }
     glVertexArrayVertexBuffer(vao_.id(), 0, g->vertices.id(), 0, sizeof(TileVertex));
     glDrawElements(GL_TRIANGLES, index_count, GL_UNSIGNED_SHORT, nullptr);
   }

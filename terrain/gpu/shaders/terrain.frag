@@ -8,6 +8,8 @@
 #include "atmosphere/shaders/surface_lighting.glsl"
 #include "terrain/shaders/regolith.glsl"
 #include "terrain/shaders/sea_brdf.glsl"
+#include "terrain/shaders/ground_material.glsl"
+#include "terrain/gpu/shaders/ground_detail.glsl"
 
 in vec3 v_normal_body;
 in vec4 v_albedo;  // alpha: tile_mesh.cpp's pack_albedo
@@ -18,6 +20,7 @@ in vec3 v_sun_transmittance;
 in vec3 v_sky_irradiance;
 in float v_sun_over_horizon;
 in vec3 v_rel_eye;
+in vec3 v_tile_offset;  // from the tile's centre, unmorphed: where the detail is sampled
 layout(location = 0) out vec4 o_radiance;
 // How far the ground lies below the datum, metres (0 where it does not):
 // the air in front of it goes down to it (sky_pixel.glsl). A drawn sea
@@ -53,6 +56,9 @@ uniform int u_regolith;
 uniform vec4 u_regolith_law;
 uniform float u_regolith_theta_bar;
 uniform float u_regolith_normal_albedo;
+// 1: Earth's materials (ground_material.glsl) in the day image's far
+// field, and the procedural detail (ground_detail.glsl) on land.
+uniform int u_materials;
 
 // Longitude and geodetic latitude as the images' coordinates.
 vec2 map_uv(vec3 p) {
@@ -112,6 +118,22 @@ vec3 sea_radiance(vec3 water_albedo, vec3 irradiance, vec3 sky, vec3 sun_transmi
 
 void main() {
   vec3 n = normalize(v_normal_body);
+  // The detail's octaves fade by the pixel's footprint, taken from the
+  // tile's small offsets (the body-frame position is 0.5 m coarse).
+  float detail_footprint = max(length(dFdx(v_tile_offset)), length(dFdy(v_tile_offset)));
+  vec4 detail = vec4(1.0, 0.0, 0.0, 0.0);
+  // Within 2 km of the eye (ground_detail.glsl): farther, the vertices'
+  // fields and the day image carry the ground.
+  float detail_share = 1.0 - smoothstep(1000.0, 2000.0, v_eye_distance);
+  if (u_materials != 0 && detail_share > 0.0) {
+    detail = mix(vec4(1.0, 0.0, 0.0, 0.0), ground_detail(v_tile_offset, detail_footprint),
+                 detail_share);
+    // The detail's height field tilts the normal by its gradient along the
+    // ground; snow (the bright ground) lies smoother, at a third of it.
+    float smooth_snow = 1.0 - 0.67 * smoothstep(0.5, 0.8, dot(v_albedo.rgb, vec3(1.0 / 3.0)));
+    vec3 tilt = smooth_snow * (detail.yzw - dot(detail.yzw, n) * n);
+    n = normalize(n - tilt);
+  }
   // The share of the sun's disc above the horizon: interpolated per
   // fragment, the shadow's edge falls between vertices.
   float sun_visible = smoothstep(-u_penumbra, u_penumbra, v_sun_over_horizon);
@@ -127,7 +149,7 @@ void main() {
   vec3 sky = clamp(v_sky_irradiance, 0.0, 1.0);
   vec3 irradiance = u_sun_irradiance * (transmittance * cos_sun + sky);
 
-  vec3 ground_albedo = clamp(v_albedo.rgb, 0.0, 1.0);
+  vec3 ground_albedo = clamp(v_albedo.rgb * detail.x, 0.0, 1.0);
   vec3 albedo = ground_albedo;
   // The shares of land and of open water in the pixel, and their albedos.
   vec3 land_albedo = ground_albedo;
@@ -164,13 +186,15 @@ void main() {
     // The image's land, turned as the heights turn it (procedural_height.cpp).
     float land = smoothstep(0.3, 0.7, day.a);
     vec3 image = day_albedo(day.rgb);
+    // Earth's land in the image: its materials' albedos (ground_material.glsl).
+    vec3 image_land = u_materials != 0 ? image_material(day.rgb).albedo : image;
     // Near the camera, the ground's own: the sea above, the palette's
     // colours on land (alpha 0.5 + half the map's cover). Beyond the
     // fade, the image's: its water and land where it draws them (the
     // heights follow its mask only within its 20 km pixels), with rock and
     // snow as the palette has them.
     float land_cover = clamp(2.0 * v_albedo.a - 1.0, 0.0, 1.0);
-    land_albedo = mix(ground_albedo, image, land_cover * fade);
+    land_albedo = mix(ground_albedo, image_land, land_cover * fade);
     water_albedo = mix(u_ocean_albedo, image, 1.0 - land);
     water = u_has_sea != 0 ? mix(sea, 1.0 - land, fade) : 0.0;
     albedo = mix(land_albedo, water_albedo, mix(sea, 1.0 - land, fade));

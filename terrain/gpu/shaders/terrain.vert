@@ -37,6 +37,7 @@ out vec3 v_sun_transmittance;
 out vec3 v_sky_irradiance;  // per unit solar irradiance
 out float v_sun_over_horizon;  // the sun's elevation minus the horizon's in its azimuth, radians
 out vec3 v_rel_eye;  // the vertex less the eye, body frame: the way it is seen (regolith, sea)
+out vec3 v_tile_offset;  // from the tile's centre, unmorphed (the ground's detail)
 
 const float kHalfPi = 1.5707963;
 
@@ -78,6 +79,7 @@ void main() {
   v_position_body = u_center_body + a_offset;
   v_eye_distance = d;
   v_rel_eye = rel_eye;
+  v_tile_offset = a_offset;
   v_over_sea = a_sea.x + morph * a_sea.y;
 #ifndef TERRAIN_COVERAGE  // the coverage pass (terrain_coverage.frag) takes no light
   v_sun_over_horizon = u_shadows != 0 ? sun_over_horizon(u_center_body + a_offset) : kHalfPi;
