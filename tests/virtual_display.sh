@@ -8,25 +8,26 @@ for tool in Xvfb xdotool; do
     exit 77
   fi
 done
-# Until the server answers: up to 30 s (with the long tier's other tests
-# alongside it took past the 5 s this once waited, and the window then
-# found no display), on another number if the server ends (its number in
-# use by another test's server).
+# Xvfb picks a free display number itself (-displayfd: it writes the
+# number once it takes connections). A number drawn at random could be one
+# another window test's server holds: this test then talked to that
+# server, and lost its display when that test ended ("GLFW: cannot
+# initialise"). Up to 30 s for the server to answer (with the long tier's
+# other tests alongside it took past 5 s).
+display_file="$(mktemp /tmp/planet-xvfb.XXXXXX)"
+Xvfb -displayfd 3 -screen 0 800x600x24 -nolisten tcp 3>"$display_file" >/dev/null 2>&1 &
+xvfb=$!
 answered=0
-for _ in 1 2 3; do
-  display=":$(( 90 + RANDOM % 400 ))"
-  Xvfb "$display" -screen 0 800x600x24 -nolisten tcp >/dev/null 2>&1 &
-  xvfb=$!
-  export DISPLAY="$display"
-  for _ in $(seq 1 300); do
+for _ in $(seq 1 300); do
+  if [ -s "$display_file" ]; then
+    export DISPLAY=":$(head -1 "$display_file")"
     xdotool getmouselocation >/dev/null 2>&1 && { answered=1; break; }
-    kill -0 "$xvfb" 2>/dev/null || break
-    sleep 0.1
-  done
-  [ "$answered" = 1 ] && break
-  kill "$xvfb" 2>/dev/null
+  fi
+  kill -0 "$xvfb" 2>/dev/null || break
+  sleep 0.1
 done
-[ "$answered" = 1 ] || { echo "FAIL: no virtual display answered (Xvfb on three numbers, 30 s each)"; exit 1; }
+rm -f "$display_file"
+[ "$answered" = 1 ] || { echo "FAIL: no virtual display answered (Xvfb -displayfd, 30 s)"; exit 1; }
 
 # await_fly_window OUT ERR: waits for `planet fly`'s window (up to 60 s),
 # then for its first "body: " line in OUT (the window is mapped and drawn
