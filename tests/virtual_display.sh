@@ -14,7 +14,7 @@ done
 # server, and lost its display when that test ended ("GLFW: cannot
 # initialise"). Up to 30 s for the server to answer (with the long tier's
 # other tests alongside it took past 5 s).
-display_file="$(mktemp /tmp/planet-xvfb.XXXXXX)"
+display_file="$(mktemp)"  # the number Xvfb writes
 Xvfb -displayfd 3 -screen 0 800x600x24 -nolisten tcp 3>"$display_file" >/dev/null 2>&1 &
 xvfb=$!
 answered=0
