@@ -22,15 +22,109 @@ uint32_t pack_albedo(glm::vec3 c, float alpha) {
   return u8(c.r) | u8(c.g) << 8 | u8(c.b) << 16 | u8(alpha) << 24;
 }
 
+// The k-th vertex along a tile's edge: 0 bottom (j = 0), 1 top
+// (j = N - 1), 2 left (i = 0), 3 right (i = N - 1).
+int edge_vertex(int edge, int k) {
+  switch (edge) {
+    case 0:
+      return k;
+    case 1:
+      return (N - 1) * N + k;
+    case 2:
+      return k * N;
+    default:
+      return k * N + (N - 1);
+  }
+}
+
+// A vertex's colour, packed with its alpha: the palette's rule, or on
+// Earth's land the materials' rule on the day image's colour, whose far
+// field terrain.frag draws by the same rule. The land's colours go to
+// every vertex, the sea's too: terrain.frag draws the sea where the
+// interpolated height over it is negative.
+uint32_t vertex_albedo(const TerrainSurface& surface, const TileKey& key, int i, int j,
+                       const glm::dvec3& x, double height, double slope, double latitude,
+                       double spacing, bool at_sea) {
+  const auto& config = surface.config();
+  const double step = key.size() / (N - 1);
+  CraterMarks marks;
+  if (!at_sea) {
+    marks = surface.heights().crater_marks(
+        cube_to_sphere(key.face, key.s0() + step * i, key.t0() + step * j), spacing);
+  }
+  glm::vec3 albedo = surface_albedo(config.palette, height, slope, latitude, x, spacing, marks);
+  float alpha = 1.0f;
+  if (config.maps) alpha = 0.5f + 0.5f * float(map_cover(config.palette, height, slope, latitude));
+  if (config.palette.materials && !at_sea) {
+    const double over_sea = height - config.sea_level.value_or(0.0);
+    const glm::dvec3 color = config.maps ? config.maps->day_color(x) : glm::dvec3(0.0);
+    albedo = glm::vec3(
+        materials::ground_material(slope, over_sea, latitude, color, bool(config.maps)).albedo);
+    // The fields of light and shade, kilometres across.
+    if (!config.palette.variation.empty()) {
+      albedo = glm::min(albedo * float(albedo_variation(config.palette.variation, x, spacing)),
+                        glm::vec3(1.0f));
+    }
+    if (config.maps) {
+      alpha = 0.5f + 0.5f * float(materials::ground_image_cover(slope, over_sea, latitude));
+    }
+  }
+  return pack_albedo(albedo, alpha);
+}
+
+// The tile's error: the surface at the midpoints of the cell edges and
+// diagonals (the grid of twice the resolution, which the children will
+// hold) against the midpoints of the triangle edges.
+double tile_error(const TerrainSurface& surface, const TileKey& key, const BorderedGrid& grid) {
+  const double s0 = key.s0(), t0 = key.t0(), step = key.size() / (N - 1);
+  double error = 0.0;
+  for (int j = 0; j < N; ++j) {
+    for (int i = 0; i < N; ++i) {
+      const double mids[3][2] = {{0.5, 0.0}, {0.0, 0.5}, {0.5, 0.5}};
+      const int ends[3][2] = {{1, 0}, {0, 1}, {1, 1}};
+      for (int m = 0; m < 3; ++m) {
+        if (i + ends[m][0] >= N || j + ends[m][1] >= N) continue;
+        glm::dvec3 truth = surface.face_point(key.face, s0 + step * (i + mids[m][0]),
+                                              t0 + step * (j + mids[m][1]));
+        glm::dvec3 chord = 0.5 * (grid.at(i, j) + grid.at(i + ends[m][0], j + ends[m][1]));
+        error = std::max(error, glm::length(truth - chord));
+      }
+    }
+  }
+  return error;
+}
+
+// Skirts: a copy of each edge pushed down, deep enough to cover the
+// largest gap to a neighbour two levels coarser (its error bound) with
+// room for float rounding of the two tiles' offsets.
+void add_skirts(const TerrainSurface& surface, TileMesh& tile) {
+  const TileKey& key = tile.key;
+  const double depth =
+      surface.error_bound(std::max(key.level - 2, 0)) + 0.05 * surface.grid_spacing(key.level);
+  for (int edge = 0; edge < 4; ++edge) {
+    for (int k = 0; k < N; ++k) {
+      TileVertex v = tile.vertices[size_t(edge_vertex(edge, k))];
+      glm::dvec3 x = tile.center_body + glm::dvec3(v.offset);
+      glm::dvec3 down = -ellipsoid_normal(surface.shape(), x);
+      // Never past half way to the centre: a shape far from its ellipsoid
+      // (Eros, whose steep walls make the bound tens of km at the coarse
+      // levels) would otherwise hang skirts through the body and out of
+      // its far side, over the ground in front. Inside a body star-shaped
+      // about its centre, a skirt that stops short of it stays hidden.
+      v.offset = glm::vec3(x + std::min(depth, 0.5 * glm::length(x)) * down - tile.center_body);
+      tile.vertices[size_t(N * N + edge * N + k)] = v;
+    }
+  }
+}
+
 }  // namespace
 
 TileMesh build_tile(const TerrainSurface& surface, const TileKey& key) {
   TileMesh tile;
   tile.key = key;
-  const double s0 = key.s0(), t0 = key.t0(), step = key.size() / (N - 1);
-  tile.center_body =
-      ellipsoid_point(surface.shape(), cube_to_sphere(key.face, s0 + 0.5 * key.size(),
-                                                      t0 + 0.5 * key.size()));
+  const double s0 = key.s0(), t0 = key.t0();
+  tile.center_body = ellipsoid_point(
+      surface.shape(), cube_to_sphere(key.face, s0 + 0.5 * key.size(), t0 + 0.5 * key.size()));
   // The grid with a border around it: every vertex's normal comes from
   // central differences of its neighbours, and its horizon from the
   // border's reach.
@@ -60,8 +154,8 @@ TileMesh build_tile(const TerrainSurface& surface, const TileKey& key) {
   for (int j = 0; j < N; ++j) {
     for (int i = 0; i < N; ++i) {
       const glm::dvec3& x = at(i, j);
-      glm::dvec3 normal = glm::normalize(glm::cross(at(i + 1, j) - at(i - 1, j),
-                                                    at(i, j + 1) - at(i, j - 1)));
+      glm::dvec3 normal =
+          glm::normalize(glm::cross(at(i + 1, j) - at(i - 1, j), at(i, j + 1) - at(i, j - 1)));
       // Where the parent's grid puts this vertex: on the parent edge (or
       // diagonal) between the two even neighbours (an even vertex is its
       // own two).
@@ -75,37 +169,15 @@ TileMesh build_tile(const TerrainSurface& surface, const TileKey& key) {
       bool at_sea = config.sea_level && height <= *config.sea_level + 1e-3;
       double slope = 1.0 - glm::dot(normal, up), latitude = std::asin(std::clamp(up.z, -1.0, 1.0));
       const double spacing = glm::length(at(i + 1, j) - x);
-      CraterMarks marks;
-      if (!at_sea) marks = surface.heights().crater_marks(
-            cube_to_sphere(key.face, s0 + step * i, t0 + step * j), spacing);
-      // The land's colours at every vertex, the sea's too: terrain.frag
-      // draws the sea where the interpolated height over it is negative.
-      glm::vec3 albedo =
-          surface_albedo(config.palette, height, slope, latitude, x, spacing, marks);
-      float alpha = 1.0f;
-      if (config.maps) {
-        alpha = 0.5f + 0.5f * float(map_cover(config.palette, height, slope, latitude));
-      }
-      if (config.palette.materials && !at_sea) {
-        // Earth's land: the materials' rule on the day image's colour
-        // here, whose far field terrain.frag draws by the same rule.
-        const double over_sea = height - config.sea_level.value_or(0.0);
-        const glm::dvec3 color = config.maps ? config.maps->day_color(x) : glm::dvec3(0.0);
-        albedo = glm::vec3(
-            materials::ground_material(slope, over_sea, latitude, color, bool(config.maps)).albedo);
-        // The fields of light and shade, kilometres across.
-        if (!config.palette.variation.empty()) {
-          albedo = glm::min(albedo * float(albedo_variation(config.palette.variation, x, spacing)),
-                            glm::vec3(1.0f));
-        }
-        if (config.maps) {
-          alpha = 0.5f + 0.5f * float(materials::ground_image_cover(slope, over_sea, latitude));
-        }
-      }
+      const uint32_t albedo =
+          vertex_albedo(surface, key, i, j, x, height, slope, latitude, spacing, at_sea);
       TileVertex& v = tile.vertices[size_t(j * N + i)];
-      v = {glm::vec3(x - tile.center_body), glm::vec3(target - x), glm::vec3(normal),
-           pack_albedo(albedo, alpha),
-           glm::packHalf2x16(glm::vec2(float(sea), float(sea_target - sea))), {}};
+      v = {glm::vec3(x - tile.center_body),
+           glm::vec3(target - x),
+           glm::vec3(normal),
+           albedo,
+           glm::packHalf2x16(glm::vec2(float(sea), float(sea_target - sea))),
+           {}};
       for (int k = 0; k < kHorizonDirections; ++k) {
         v.horizon[k] = encode_horizon(horizons.seen[size_t((j * N + i) * kHorizonDirections + k)]);
       }
@@ -113,49 +185,8 @@ TileMesh build_tile(const TerrainSurface& surface, const TileKey& key) {
       tile.heights.max = std::max(tile.heights.max, height);
     }
   }
-  // The error: the surface at the midpoints of the cell edges and
-  // diagonals (the grid of twice the resolution, which the children will
-  // hold) against the midpoints of the triangle edges.
-  for (int j = 0; j < N; ++j) {
-    for (int i = 0; i < N; ++i) {
-      const double mids[3][2] = {{0.5, 0.0}, {0.0, 0.5}, {0.5, 0.5}};
-      const int ends[3][2] = {{1, 0}, {0, 1}, {1, 1}};
-      for (int m = 0; m < 3; ++m) {
-        if (i + ends[m][0] >= N || j + ends[m][1] >= N) continue;
-        glm::dvec3 truth = surface.face_point(key.face, s0 + step * (i + mids[m][0]),
-                                              t0 + step * (j + mids[m][1]));
-        glm::dvec3 chord = 0.5 * (at(i, j) + at(i + ends[m][0], j + ends[m][1]));
-        tile.error = std::max(tile.error, glm::length(truth - chord));
-      }
-    }
-  }
-  // Skirts: a copy of each edge pushed down, deep enough to cover the
-  // largest gap to a neighbour two levels coarser (its error bound) with
-  // room for float rounding of the two tiles' offsets.
-  double depth = surface.error_bound(std::max(key.level - 2, 0)) +
-                 0.05 * surface.grid_spacing(key.level);
-  auto edge_vertex = [&](int edge, int k) {
-    switch (edge) {
-      case 0: return k;                  // bottom, j = 0
-      case 1: return (N - 1) * N + k;    // top, j = N - 1
-      case 2: return k * N;              // left, i = 0
-      default: return k * N + (N - 1);  // right, i = N - 1
-    }
-  };
-  for (int edge = 0; edge < 4; ++edge) {
-    for (int k = 0; k < N; ++k) {
-      TileVertex v = tile.vertices[size_t(edge_vertex(edge, k))];
-      glm::dvec3 x = tile.center_body + glm::dvec3(v.offset);
-      glm::dvec3 down = -ellipsoid_normal(surface.shape(), x);
-      // Never past half way to the centre: a shape far from its ellipsoid
-      // (Eros, whose steep walls make the bound tens of km at the coarse
-      // levels) would otherwise hang skirts through the body and out of
-      // its far side, over the ground in front. Inside a body star-shaped
-      // about its centre, a skirt that stops short of it stays hidden.
-      v.offset = glm::vec3(x + std::min(depth, 0.5 * glm::length(x)) * down - tile.center_body);
-      tile.vertices[size_t(N * N + edge * N + k)] = v;
-    }
-  }
+  tile.error = tile_error(surface, key, grid);
+  add_skirts(surface, tile);
   return tile;
 }
 
@@ -169,14 +200,6 @@ const std::vector<uint16_t>& tile_indices() {
         idx.insert(idx.end(), {v00, v10, v11, v00, v11, v01});
       }
     }
-    auto edge_vertex = [](int edge, int k) {
-      switch (edge) {
-        case 0: return k;
-        case 1: return (N - 1) * N + k;
-        case 2: return k * N;
-        default: return k * N + (N - 1);
-      }
-    };
     for (int edge = 0; edge < 4; ++edge) {
       for (int k = 0; k + 1 < N; ++k) {
         auto a = uint16_t(edge_vertex(edge, k)), b = uint16_t(edge_vertex(edge, k + 1));
