@@ -180,10 +180,14 @@ SurfaceMaps::SurfaceMaps(const SurfaceMapFiles& files, double flattening)
   max_land_slope_ = steepest;
 }
 
-double SurfaceMaps::texel(const std::vector<float>& a, int x, int y) const {
+size_t SurfaceMaps::pixel_index(int x, int y) const {
   x = ((x % width_) + width_) % width_;
   y = std::clamp(y, 0, height_ - 1);
-  return a[size_t(y) * size_t(width_) + size_t(x)];
+  return size_t(y) * size_t(width_) + size_t(x);
+}
+
+double SurfaceMaps::texel(const std::vector<float>& a, int x, int y) const {
+  return a[pixel_index(x, y)];
 }
 
 glm::dvec2 SurfaceMaps::lon_lat(const glm::dvec3& d) const {
@@ -192,33 +196,27 @@ glm::dvec2 SurfaceMaps::lon_lat(const glm::dvec3& d) const {
   return {std::atan2(d.y, d.x), std::atan2(d.z, k * std::hypot(d.x, d.y))};
 }
 
-double SurfaceMaps::land(const glm::dvec3& dir_body) const {
+template <class Texel>
+auto SurfaceMaps::bilinear(const glm::dvec3& dir_body, Texel texel) const {
   glm::dvec2 ll = lon_lat(dir_body);
-  // Pixel centres at (i + 0.5) / width of the longitude span.
   double u = (ll.x / (2.0 * glm::pi<double>()) + 0.5) * width_ - 0.5;
   double v = (0.5 - ll.y / glm::pi<double>()) * height_ - 0.5;
   double fu = std::floor(u), fv = std::floor(v);
   int x = int(fu), y = int(fv);
   double a = u - fu, b = v - fv;
-  return (1 - b) * ((1 - a) * texel(land_, x, y) + a * texel(land_, x + 1, y)) +
-         b * ((1 - a) * texel(land_, x, y + 1) + a * texel(land_, x + 1, y + 1));
+  return (1 - b) * ((1 - a) * texel(x, y) + a * texel(x + 1, y)) +
+         b * ((1 - a) * texel(x, y + 1) + a * texel(x + 1, y + 1));
+}
+
+double SurfaceMaps::land(const glm::dvec3& dir_body) const {
+  return bilinear(dir_body, [&](int x, int y) { return texel(land_, x, y); });
 }
 
 glm::dvec3 SurfaceMaps::day_color(const glm::dvec3& dir_body) const {
-  glm::dvec2 ll = lon_lat(dir_body);
-  double u = (ll.x / (2.0 * glm::pi<double>()) + 0.5) * width_ - 0.5;
-  double v = (0.5 - ll.y / glm::pi<double>()) * height_ - 0.5;
-  double fu = std::floor(u), fv = std::floor(v);
-  int x = int(fu), y = int(fv);
-  double a = u - fu, b = v - fv;
-  auto rgb = [&](int i, int j) {
-    i = ((i % width_) + width_) % width_;
-    j = std::clamp(j, 0, height_ - 1);
-    const uint8_t* p = &day_[(size_t(j) * size_t(width_) + size_t(i)) * 4];
+  return bilinear(dir_body, [&](int x, int y) {
+    const uint8_t* p = &day_[pixel_index(x, y) * 4];
     return glm::dvec3(p[0], p[1], p[2]) / 255.0;
-  };
-  return (1 - b) * ((1 - a) * rgb(x, y) + a * rgb(x + 1, y)) +
-         b * ((1 - a) * rgb(x, y + 1) + a * rgb(x + 1, y + 1));
+  });
 }
 
 double SurfaceMaps::distance_to_coast(const glm::dvec3& dir_body) const {

@@ -63,7 +63,14 @@ class SurfaceMaps {
   glm::dvec2 lon_lat(const glm::dvec3& dir_body) const;
 
  private:
+  // The pixel (x, y) of a map, wrapped in longitude, clamped in latitude,
+  // as an index into its row-major pixels.
+  size_t pixel_index(int x, int y) const;
   double texel(const std::vector<float>& a, int x, int y) const;
+  // The bilinear blend of texel(x, y) around a direction (pixel centres
+  // at (i + 0.5) / width of the longitude span).
+  template <class Texel>
+  auto bilinear(const glm::dvec3& dir_body, Texel texel) const;
 
   SurfaceMapFiles files_;
   double flattening_ = 0;
