@@ -53,6 +53,7 @@ std::unique_ptr<CLI::App> make_cli() {
   add_techniques_command(*app);
   add_lab_command(*app);
   add_probe_sun_command(probe);
+  add_probe_moon_command(probe);
   add_probe_ground_command(probe);
   add_probe_oneil_command(probe);
   return app;

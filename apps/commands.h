@@ -32,6 +32,8 @@ void add_lab_measured_command(CLI::App& lab);
 // naming `what` (the command) where there is none. Said before any work.
 std::string matplotlib_python(const std::string& what);
 void add_probe_sun_command(CLI::App& probe);
+// `planet probe moon`: the Moon's light over a place on Earth.
+void add_probe_moon_command(CLI::App& probe);
 // `planet probe ground`: the terrain's height under a place.
 void add_probe_ground_command(CLI::App& probe);
 // `planet probe oneil-fit`: the oneil technique's fitted scale functions.

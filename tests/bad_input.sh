@@ -9,6 +9,8 @@ sun=("$planet" probe sun --planet earth --lon 2.35 --time 2026-06-21T12:00:00Z)
 expect "--lat: 91" "${sun[@]}" --lat 91
 expect "--time: '2026-06-21T25:00:00Z'" "$planet" probe sun --lat 0 --lon 0 --time 2026-06-21T25:00:00Z
 expect "--time: 'noon'" "$planet" probe sun --lat 0 --lon 0 --time noon
+expect "--lat: 95" "$planet" probe moon --lat 95 --lon 0 --time 2022-12-08T04:08:00Z
+expect "--time: 'midnight'" "$planet" probe moon --lat 0 --lon 0 --time midnight
 expect "vulcan" "$planet" probe sun --planet vulcan --lat 0 --lon 0 --time 2026-06-21T12:00:00Z
 expect "the date: '2024-13-08' has no month 13" "$planet" eclipse 2024-13-08
 expect "the date: '2024-04-08T12:00Z' must be a day (YYYY-MM-DD), not a time" \
@@ -55,7 +57,7 @@ expect "not a frame number" "$planet" capture --flight "$flights/ascent.json" --
 expect "--width: Value 0 not in range 1 to 8192" "$planet" reference --scene earth_noon --width 0 --out "$work/r.exr"
 expect "not expected: --bogus" "$planet" reference --bogus
 expect "planet needs a command: capture," "$planet"
-expect "planet probe needs a command: transmittance, sky, sun, ground" "$planet" probe
+expect "planet probe needs a command: transmittance, sky, sun, moon, ground" "$planet" probe
 expect "'flz' is not a command of planet (capture, " "$planet" flz
 expect "'wind' is not a command of planet probe (transmittance" "$planet" probe wind --planet earth
 expect "flights: cannot open file: it is a directory" "$planet" capture --flight "$flights" --out "$work/d" --quiet

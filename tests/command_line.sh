@@ -28,7 +28,7 @@ case "$part" in
 help)
   # The table of techniques, 60 lines, under every command's --help
   # drowned its options.
-  for command in "" capture fly soak probe "probe sun" "probe ground" lab accuracy eclipse; do
+  for command in "" capture fly soak probe "probe sun" "probe moon" "probe ground" lab accuracy eclipse; do
     # shellcheck disable=SC2086
     succeed "$planet" $command --help
     lines=$(wc -l < "$work/out.txt")
@@ -48,6 +48,19 @@ help)
   grep -q "^path width  *197" "$work/out.txt" || fail "planet eclipse 2024-04-08: no 197 km path"
   succeed "$planet" eclipse 2022-11-08
   grep -q "^U2  *10:16" "$work/out.txt" || fail "planet eclipse 2022-11-08: no U2 at 10:16"
+  # The Moon's light (docs/eclipses.md#moonlight): the full Moon of
+  # 2022-12-08 nearly overhead gives 0.1 to 0.3 lux on level ground; the
+  # first quarter of 2022-12-30, as high, about a tenth of it.
+  succeed "$planet" probe moon --lat 25 --lon -60 --time 2022-12-08T04:08:00Z
+  full=$(sed -n 's/^ *\([0-9.]*\) lux under the air.*/\1/p' "$work/out.txt")
+  level=$(sed -n 's/^ *\([0-9.]*\) lux on level ground/\1/p' "$work/out.txt")
+  awk -v l="$level" 'BEGIN { exit !(l >= 0.1 && l <= 0.3) }' ||
+    fail "the full Moon overhead gives '$level' lux on level ground, not 0.1 to 0.3"
+  grep -q "^phase  *2\.[0-9]* deg" "$work/out.txt" || fail "the full Moon's phase is not 2-3 deg"
+  succeed "$planet" probe moon --lat 0 --lon -100 --time 2022-12-30T01:21:00Z
+  quarter=$(sed -n 's/^ *\([0-9.]*\) lux under the air.*/\1/p' "$work/out.txt")
+  awk -v q="$quarter" -v f="$full" 'BEGIN { exit !(f > 0 && q / f > 0.06 && q / f < 0.14) }' ||
+    fail "the quarter Moon gives '$quarter' lux against the full Moon's '$full', not about a tenth"
   succeed "$planet" techniques
   grep -q "Atmosphere techniques:" "$work/out.txt" || fail "planet techniques has no table"
   for t in hillaire raymarch bruneton oneil; do
