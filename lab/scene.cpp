@@ -168,7 +168,21 @@ std::vector<Scene> eclipse_scenes() {
     (sun_share(s, sun_radius, s.camera.pos_body) < 0.1 ? lo : hi) = mid;
   }
   partial = place(partial, {lo, eclipse->point.lon, 2.0});
-  return {total, partial};
+  // From 400 km over the place 8 degrees north of the centre (890 km),
+  // looking south 30 degrees down: the umbra 26 degrees below the
+  // horizontal, the penumbra about it and the limb, 20 degrees down, across
+  // the top.
+  Scene orbit = total;
+  orbit.name = "earth_eclipse_400km";
+  orbit.description =
+      "2024-04-08 at greatest eclipse, from 400 km north of totality looking south: the umbra on "
+      "the ground and the air, the penumbra about it, the limb";
+  orbit.exposure = 8.0;
+  const Geodetic over{eclipse->point.lat + glm::radians(4.0), eclipse->point.lon, 400e3};
+  orbit.camera =
+      geodesy.camera_at(over, glm::pi<double>(), glm::radians(-40.0), glm::radians(60.0));
+  orbit.sun_dir_body = glm::normalize(sun_body - orbit.camera.pos_body);
+  return {total, partial, orbit};
 }
 
 PathBudget lab_reference_paths(const Scene& scene) {

@@ -67,8 +67,9 @@ std::vector<Scene> canonical_scenes();
 // The eclipse scenes of 2024-04-08 at greatest eclipse (18:17 UTC), with
 // the Sun and the Moon where the ephemeris puts them (sim/ephemeris.h):
 // earth_eclipse_total, on the ground at the centre of totality looking
-// north toward the horizon's glow, and earth_eclipse_partial, due north of
-// it where the visible share of the sun's flux (green) is 10 %.
+// north toward the horizon's glow; earth_eclipse_partial, due north of
+// it where the visible share of the sun's flux (green) is 10 %; and
+// earth_eclipse_400km, the umbra seen from 400 km north of it.
 // Apart from the canonical scenes, whose table they leave as it stands.
 std::vector<Scene> eclipse_scenes();
 // The visible share (green) of the sun's flux at a point of a scene's

@@ -32,6 +32,30 @@ TEST(EclipseScenesTest, TotalityStandsInTheUmbraAndThePartialPhaseKeepsATenthOfT
   EXPECT_NEAR(north.lon, at.lon, 1e-9);
 }
 
+TEST(EclipseScenesTest, FromOrbitTheUmbraLiesInTheMiddleOfTheView) {
+  Scene orbit = find_scene("earth_eclipse_400km");
+  Body body = scene_body(orbit);
+  Geodesy geodesy(body.shape);
+  Geodetic at = geodesy.geodetic_from_body(orbit.camera.pos_body);
+  Geodetic centre = geodesy.geodetic_from_body(find_scene("earth_eclipse_total").camera.pos_body);
+  EXPECT_NEAR(at.height, 400e3, 1.0);
+  EXPECT_NEAR(glm::degrees(at.lat - centre.lat), 4.0, 1e-6);
+  // The camera itself in the penumbra, the ground along the view's axis in
+  // the umbra (the ellipsoid, walked to by bisection along the ray).
+  double share = scene_sun_share(orbit, orbit.camera.pos_body);
+  EXPECT_GT(share, 0.0);
+  EXPECT_LT(share, 1.0);
+  const glm::dvec3 axis = orbit.camera.forward_body();
+  double lo = 0, hi = 2000e3;
+  for (int i = 0; i < 60; ++i) {
+    double mid = 0.5 * (lo + hi);
+    (geodesy.geodetic_from_body(orbit.camera.pos_body + mid * axis).height > 0 ? lo : hi) = mid;
+  }
+  const glm::dvec3 ground = orbit.camera.pos_body + lo * axis;
+  EXPECT_LT(lo, 1000e3);  // the axis meets the ground
+  EXPECT_EQ(scene_sun_share(orbit, ground), 0.0);
+}
+
 }  // namespace PLANET_TEST_ID
 }  // namespace
 }  // namespace planet
