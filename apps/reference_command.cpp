@@ -112,7 +112,11 @@ void run_reference(const ReferenceArgs& args) {
   }
   if (args.list) {
     for (const Scene& s : canonical_scenes()) {
-      std::printf("%-20s %-9s %s\n", s.name.c_str(), s.body.c_str(), s.description.c_str());
+      std::printf("%-22s %-9s %s\n", s.name.c_str(), s.body.c_str(), s.description.c_str());
+    }
+    std::printf("and, apart from the canonical table, the eclipse scenes:\n");
+    for (const Scene& s : eclipse_scenes()) {
+      std::printf("%-22s %-9s %s\n", s.name.c_str(), s.body.c_str(), s.description.c_str());
     }
     return;
   }
@@ -171,8 +175,7 @@ void run_reference(const ReferenceArgs& args) {
   folder.keep();
   if (args.quiet) return;  // errors alone
   double traced = pixels * budget.spp * (1.0 - render.started_share);
-  std::string orders =
-      scene.max_order > 0 ? fmt::format(", orders 1 to {}", scene.max_order) : "";
+  std::string orders = scene.max_order > 0 ? fmt::format(", orders 1 to {}", scene.max_order) : "";
   std::printf("%s: %dx%d, %s spp, %s%s, %s in %.1f s (%.3g paths/s)\n", scene.name.c_str(),
               scene.width, scene.height, budget.label().c_str(), args.mode.c_str(), orders.c_str(),
               was_cached ? "from the cache" : "rendered", seconds,
@@ -204,7 +207,7 @@ void add_reference_command(CLI::App& app) {
                   "larger --spp for the same view starts from the sums of a smaller "
                   "one.",
                   reference_cache_dir().string()));
-  cmd->add_option("--scene", args->scene, "Canonical scene name (see --list); required");
+  cmd->add_option("--scene", args->scene, "Scene name (see --list); required");
   cmd->add_option("--spp", args->paths,
                   "Paths per pixel: in all (98304), or per channel (32768,131072,524288)");
   cmd->add_option("--out", args->out,
@@ -224,7 +227,7 @@ void add_reference_command(CLI::App& app) {
   cmd->add_option("--max-order", args->max_order,
                   "Sum only the first N orders of scattering (1: single scattering alone; "
                   "default: every order); cached apart from the full ground truth");
-  cmd->add_flag("--list", args->list, "List the canonical scenes");
+  cmd->add_flag("--list", args->list, "List the canonical scenes and the eclipse scenes");
   cmd->add_flag("--quiet", args->quiet, "Errors alone: no progress, no result lines");
   cmd->callback([args] { run_reference(*args); });
 }

@@ -61,6 +61,11 @@ help)
   quarter=$(sed -n 's/^ *\([0-9.]*\) lux under the air.*/\1/p' "$work/out.txt")
   awk -v q="$quarter" -v f="$full" 'BEGIN { exit !(f > 0 && q / f > 0.06 && q / f < 0.14) }' ||
     fail "the quarter Moon gives '$quarter' lux against the full Moon's '$full', not about a tenth"
+  # Every scene --scene takes is listed, the eclipse scenes too.
+  succeed "$planet" reference --list
+  for scene in earth_noon earth_eclipse_total earth_eclipse_400km; do
+    grep -q "^$scene " "$work/out.txt" || fail "planet reference --list does not list $scene"
+  done
   succeed "$planet" techniques
   grep -q "Atmosphere techniques:" "$work/out.txt" || fail "planet techniques has no table"
   for t in hillaire raymarch bruneton oneil; do
