@@ -28,6 +28,8 @@ void add_techniques_command(CLI::App& app);
 void add_lab_command(CLI::App& app);
 // `planet lab measured`, added to the lab parent by add_lab_command.
 void add_lab_measured_command(CLI::App& lab);
+// `planet lab clarity`, added the same way.
+void add_lab_clarity_command(CLI::App& lab);
 // The python3 that imports matplotlib, for a command's charts; InputError
 // naming `what` (the command) where there is none. Said before any work.
 std::string matplotlib_python(const std::string& what);

@@ -435,6 +435,7 @@ void add_lab_command(CLI::App& app) {
   governor->callback([gv] { run_governor_command(*gv); });
 
   add_lab_measured_command(*lab);
+  add_lab_clarity_command(*lab);
 }
 
 }  // namespace planet::apps

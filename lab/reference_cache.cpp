@@ -91,6 +91,7 @@ void hash_view(Hasher& h, const Scene& scene, const AtmosphereModel& m, Referenc
   h.number(scene.projection == Projection::kPerspective ? 0 : 1);
   // Only where limited, so that the keys of the full ground truth stand.
   if (scene.max_order > 0) h.text("max order"), h.number(scene.max_order);
+  if (scene.target_albedo) h.text("target albedo"), h.number(*scene.target_albedo);
   if (scene.moon_radius > 0.0) {
     h.text("moon"), h.vec(scene.moon_pos_body), h.number(scene.moon_radius);
   }

@@ -245,7 +245,9 @@ Body scene_body(const Scene& scene) {
   if (body.has_atmosphere()) {
     // The albedo at the model's three wavelengths: one grey, or a spectrum's
     // (derived atmospheres, atmosphere_inputs.h).
-    glm::dvec3 a = load_atmosphere(body).ground_albedo;
+    glm::dvec3 a = scene.target_albedo   ? glm::dvec3(*scene.target_albedo)
+                   : scene.ground_albedo ? glm::dvec3(*scene.ground_albedo)
+                                         : load_atmosphere(body).ground_albedo;
     nlohmann::json grey = {a.r, a.g, a.b};
     body.terrain = {
         {"max_level", 12},
@@ -272,6 +274,10 @@ AtmosphereModel scene_atmosphere(const Scene& scene, const Body& body) {
   if (scene.bottom_radius) {
     model = with_bottom_radius(model, *scene.bottom_radius, scene.absolute_thickness);
   }
+  if (scene.ground_albedo) {
+    model.ground_albedo = glm::dvec3(*scene.ground_albedo);
+    if (model.spectrum) model.spectrum->ground_albedo.clear();  // the grey at every sample
+  }
   return model;
 }
 
@@ -293,6 +299,7 @@ ReferenceSettings reference_settings(const Scene& scene, const PathBudget& paths
   settings.paths = paths;
   settings.seed = scene.seed();
   settings.trace.max_order = scene.max_order;
+  settings.trace.first_ground_albedo = scene.target_albedo.value_or(-1.0);
   return settings;
 }
 

@@ -33,6 +33,12 @@ struct Scene {
   std::optional<double> bottom_radius;  // metres
   bool absolute_thickness = false;
   double scale_height_scale = 1.0;
+  // The clarity views' grounds (lab/clarity.h): the ground of one albedo
+  // at every wavelength in place of the model's, and a target's albedo
+  // where the camera's rays meet the ground, the air around it lit over
+  // the model's (TraceOptions::first_ground_albedo; the frame's palette).
+  std::optional<double> ground_albedo;
+  std::optional<double> target_albedo;
   Camera camera;
   glm::dvec3 sun_dir_body{0.0, 0.0, 1.0};
   int width = 128, height = 64;

@@ -257,13 +257,16 @@ double trace_path(const DepthTable& table, glm::dvec3 origin, glm::dvec3 dir,
     }
     glm::dvec3 end = start + length * dir;
     glm::dvec3 normal = glm::normalize(end);
+    const double albedo = order == 1 && options.first_ground_albedo >= 0.0
+                              ? options.first_ground_albedo
+                              : c.ground_albedo;
     if (s.hits_ground && options.sun) {
       glm::dvec3 to_sun = reference::sample_cone(sun_dir, cos_alpha, rng);
       double cos_sun = glm::dot(normal, to_sun);
       if (cos_sun > 0.0) {
         glm::dvec3 ground = normal * m.bottom_radius;
-        double light = transmittance * c.solar_irradiance * c.ground_albedo / reference::kPi *
-                       cos_sun * transmittance_to_top(table, ground, to_sun);
+        double light = transmittance * c.solar_irradiance * albedo / reference::kPi * cos_sun *
+                       transmittance_to_top(table, ground, to_sun);
         if (has_moon(options)) {
           light *= sun_share(options, m.sun_angular_radius, c.wavelength_nm, ground, sun_dir);
         }
@@ -338,7 +341,7 @@ double trace_path(const DepthTable& table, glm::dvec3 origin, glm::dvec3 dir,
       }
       dir = next;
     } else {
-      weight *= c.ground_albedo;
+      weight *= albedo;
       origin = normal * m.bottom_radius;
       dir = reference::sample_cosine(normal, turn);
     }

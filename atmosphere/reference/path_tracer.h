@@ -78,6 +78,12 @@ struct TraceOptions {
   // directly is hidden where the Moon's sphere stands before it.
   glm::dvec3 moon_centre_atmo{0.0};
   double moon_radius = 0;
+  // The ground's albedo where the camera's ray meets it (the first
+  // segment's end), at every wavelength; the channel's everywhere else.
+  // A target of that albedo too small to light the air around it: the
+  // difference of two targets' radiances is then the view path's
+  // transmittance times theirs (lab/clarity.h). Negative: none.
+  double first_ground_albedo = -1.0;
 };
 
 // The radiance (per nm, in the units of the solar irradiance) arriving at
