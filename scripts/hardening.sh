@@ -6,7 +6,7 @@
 #                runs
 #   asan-long [K/N]  share K of N (K from 0) of the long tier under the same
 #                build: the long tier's tests sorted by name, every N-th from
-#                the K-th. Without K/N, share K of PLANET_ASAN_LONG_SHARES (2),
+#                the K-th. Without K/N, share K of PLANET_ASAN_LONG_SHARES (3),
 #                K the commit's number (git rev-list --count HEAD) modulo N,
 #                so that N commits in a row run every share; a share that failed runs
 #                again by hand with the K/N it printed;
@@ -32,7 +32,7 @@ cd "$root"
 asan_dir="${PLANET_ASAN_BUILD_DIR:-build-asan}"
 tsan_dir="${PLANET_TSAN_BUILD_DIR:-build-tsan}"
 seconds="${PLANET_FUZZ_SECONDS:-20}"
-shares="${PLANET_ASAN_LONG_SHARES:-2}"
+shares="${PLANET_ASAN_LONG_SHARES:-3}"
 jobs="$(nproc)"
 supp="$root/tests/sanitizers"
 
