@@ -73,6 +73,74 @@ TEST(CloudPassGLTest, WithoutCloudsOrWithThemOffAFrameKeepsItsBytes) {
   EXPECT_GT(sum_on, 1.15 * sum_off);
 }
 
+// From 400 km across the limb (128x64, the planet's edge a curve across
+// the frame): the clouds marched at one pixel in four and blended back at
+// full resolution (CloudQuality::downsample 2) against every pixel
+// marched. Along the edge, where a pixel of space sits beside one of
+// ground, each pixel takes only marched neighbours that end as it does,
+// or marches itself: the clouds over the ground do not bleed into space
+// nor space's into the ground. Blending any neighbour there, the edge
+// pixels differed by 0.21 of their mean (measured), against 0.0008 so.
+TEST(CloudPassGLTest, HalfResolutionCloudsDoNotBleedAcrossTheLimb) {
+  auto context = GlContext::create_headless();
+  constexpr int kW = 128, kH = 64;
+  const PlaceView view = view_from_place(Ellipsoid{6378137.0, 0.0033528106647474805},
+                                         {glm::radians(-30.0), glm::radians(-40.0), 400e3}, 60.0,
+                                         -20.0, 70.0, 35.0, 120.0);
+  auto shoot_at = [&view](int downsample) {
+    Body body = load_body(find_body_file("earth"));
+    FrameRenderer renderer(kW, kH);
+    FrameOptions options;
+    options.clouds = true;
+    options.cloud_quality.downsample = downsample;
+    renderer.set_options(options);
+    renderer.set_body(body, load_atmosphere(body), make_technique("hillaire"));
+    renderer.render(view.camera, view.sun_dir_body, 2.0);
+    return renderer.read_hdr();
+  };
+  // Whether pixel (x, y) (rows bottom-up) sees the ground: its ray against
+  // a sphere of the ellipsoid's radius at -30 degrees (6372.8 km), which
+  // places the limb within a pixel here.
+  const double tan_half = std::tan(0.5 * view.camera.vertical_fov);
+  std::vector<bool> ground_at(kW * kH);
+  for (int y = 0; y < kH; ++y) {
+    for (int x = 0; x < kW; ++x) {
+      const glm::dvec3 dir_camera((2.0 * (x + 0.5) / kW - 1.0) * tan_half * kW / kH,
+                                  (2.0 * (y + 0.5) / kH - 1.0) * tan_half, -1.0);
+      const glm::dvec3 d = glm::normalize(view.camera.body_from_camera * dir_camera);
+      const glm::dvec3& o = view.camera.pos_body;
+      const double b = glm::dot(o, d), c = glm::dot(o, o) - 6372.8e3 * 6372.8e3;
+      ground_at[y * kW + x] = b < 0.0 && b * b - c > 0.0;
+    }
+  }
+  const std::vector<float> full = shoot_at(1);
+  const std::vector<float> half = shoot_at(2);
+  double diff = 0, mean = 0;
+  int edge = 0;
+  for (int y = 1; y + 1 < kH; ++y) {
+    for (int x = 1; x + 1 < kW; ++x) {
+      bool space = false, ground = false;
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx)
+          (ground_at[(y + dy) * kW + x + dx] ? ground : space) = true;
+      }
+      if (!(space && ground)) continue;
+      ++edge;
+      for (int c = 0; c < 3; ++c) {
+        const size_t i = size_t(y * kW + x) * 4 + c;
+        diff += std::abs(half[i] - full[i]);
+        mean += full[i];
+      }
+    }
+  }
+  std::printf(
+      "%d pixels along the limb: half resolution against full, mean |difference| %.4g "
+      "of their mean\n",
+      edge, diff / mean);
+  ASSERT_GT(edge, 100);  // the limb crosses the frame
+  EXPECT_LT(diff / mean, 0.02);
+}
+
 // Across the layer's base and top (1.5 and 6 km above the bottom sphere;
 // 1.5 and 6 km above the ellipsoid here, to 0.3 %) in 5 m steps from 40 m
 // below to 40 m above: each step changes the image by about as much as
