@@ -141,6 +141,43 @@ TEST(CloudPassGLTest, HalfResolutionCloudsDoNotBleedAcrossTheLimb) {
   EXPECT_LT(diff / mean, 0.02);
 }
 
+// At night under the overcast (the sun 30 degrees below the horizon),
+// looking up: the stars behind the clouds are dimmed by the clouds'
+// transmittance (stars.frag), as a deck of optical depth 10 or more hides
+// them. Without the clouds the stars are nearly all the sky's light.
+TEST(CloudPassGLTest, StarsDoNotShineThroughAnOvercastAtNight) {
+  auto context = GlContext::create_headless();
+  auto starlight = [](bool clouds) {
+    Body body = load_body(find_body_file("earth"));
+    FrameRenderer renderer(128, 64);
+    FrameOptions options;
+    options.clouds = clouds;
+    options.stars = true;
+    renderer.set_options(options);
+    renderer.set_body(body, load_atmosphere(body), make_technique("hillaire"));
+    PlaceView view = view_from_place(Ellipsoid{6378137.0, 0.0033528106647474805},
+                                     {glm::radians(-30.0), glm::radians(-40.0), 100.0}, 60.0, 80.0,
+                                     70.0, -30.0, 120.0);
+    renderer.render(view.camera, view.sun_dir_body, 2.0);
+    std::vector<float> hdr = renderer.read_hdr();
+    double sum = 0, brightest = 0;
+    for (size_t i = 1; i < hdr.size(); i += 4) {
+      sum += hdr[i];
+      brightest = std::max(brightest, double(hdr[i]));
+    }
+    return std::pair{sum, brightest};
+  };
+  auto [clear_sum, clear_brightest] = starlight(false);
+  auto [overcast_sum, overcast_brightest] = starlight(true);
+  std::printf(
+      "at night, looking up, green radiance: clear sum %.4g (brightest pixel %.4g), "
+      "overcast sum %.4g (brightest pixel %.4g)\n",
+      clear_sum, clear_brightest, overcast_sum, overcast_brightest);
+  ASSERT_GT(clear_brightest, 0.0);  // stars in view, or the test checks nothing
+  EXPECT_LT(overcast_sum, 0.05 * clear_sum);
+  EXPECT_LT(overcast_brightest, 0.05 * clear_brightest);
+}
+
 // Across the layer's base and top (1.5 and 6 km above the bottom sphere;
 // 1.5 and 6 km above the ellipsoid here, to 0.3 %) in 5 m steps from 40 m
 // below to 40 m above: each step changes the image by about as much as
