@@ -4,18 +4,15 @@
 // orbit, one march: no switch between views). Each sample is lit by the
 // sun through the air (the shared transmittance, and the planet's shadow)
 // and the clouds toward the sun, with multiple scattering by Wrenninge et
-// al. 2013's octaves ("Production Volume Rendering", SIGGRAPH course,
-// sec. 5.4: octave i takes a^i of the optical depth toward the sun, b^i of
-// the light and a phase c^i as eccentric; a = 1/4, b = c = 1/2, within
-// their a <= b that keeps energy: with a = 1/2 a cumulus of optical depth
-// 30 toward the sun sends back a fifth of what a = 1/4 does, and looks
-// grey from orbit), plus the sky's
+// al. 2013's octaves (cloud_octaves in cloud_scattering.glsl, a = 1/4:
+// with a = 1/2 a cumulus of optical depth 30 toward the sun sends back a
+// fifth of what a = 1/4 does, and looks grey from orbit), plus the sky's
 // light as an isotropic ambient. Then the air in front of the clouds
 // (aerial perspective) is marched to their transmittance-weighted distance:
 // out = T_air L_clouds + (1 - T_clouds) S_air, blended over the radiance
 // behind as out + T_clouds * behind (GL_ONE, GL_SRC_ALPHA). Included by
-// clouds_march.frag (at the pass's resolution) and clouds_upsample.frag
-// (at full resolution, where no marched neighbour lies at the pixel's depth).
+// clouds_march.frag (at the pass's resolution) and, through
+// cloud_upsample.glsl, by the passes that bring it to full resolution.
 #include "atmosphere/shaders/atmosphere_block.glsl"
 
 // The sun's light through the air by quadrature, as the terrain's lighting
@@ -30,6 +27,7 @@ Real3 transmittance_lookup(IN(Atmosphere) atmosphere, Real r, Real mu) {
 #include "clouds/shaders/cloud_noise.glsl"
 #include "clouds/shaders/cloud_density.glsl"
 #include "clouds/shaders/cloud_phase.glsl"
+#include "clouds/shaders/cloud_scattering.glsl"
 
 layout(binding = 0) uniform sampler2D u_depth;
 layout(binding = 1) uniform sampler2D u_surface;
@@ -223,13 +221,7 @@ vec4 cloud_march(ivec2 at, CloudRay ray) {
     float w = 2.0 * s / segment;
     vec3 sunlight = w < 1.0 ? mix(sun_at[0], sun_at[1], w) : mix(sun_at[1], sun_at[2], w - 1.0);
     float tau_sun = optical_depth_to_sun(layer, p, weather);
-    // Wrenninge's octaves.
-    float octaves = 0.0, b = 1.0, a = 1.0;
-    for (int k = 0; k < u_octaves; ++k) {
-      octaves += b * mix(isotropic_phase(), phase, b) * exp(-a * tau_sun);
-      b *= 0.5;
-      a *= 0.25;
-    }
+    float octaves = cloud_octaves(phase, tau_sun, dot(p, u_sun_dir) / r, u_octaves);
     // The sky's light: its irradiance on level ground at p as an isotropic
     // radiance E / pi from the upper half of the sphere (half of it
     // scattered toward any direction), dimmer toward the layer's base,

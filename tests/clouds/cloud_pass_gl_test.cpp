@@ -56,9 +56,11 @@ TEST(CloudPassGLTest, WithoutCloudsOrWithThemOffAFrameKeepsItsBytes) {
   EXPECT_FALSE(asked.clouds_ran);
   EXPECT_EQ(plain.hdr, asked.hdr);
   // Earth has clouds: off, the pass is skipped; on, it runs and the
-  // weather brightens the sea below (the shipped weather is overcast here:
-  // measured 1.23 times the clear view's radiance, where a real overcast
-  // would reflect about 3 times: docs/clouds.md#what-is-not-done).
+  // weather brightens the sea below. The view's 560 km hold overcast
+  // (optical depth 10 at its middle, a deck's albedo 0.51 by
+  // delta-Eddington: CloudScatteringTest) and gaps: measured 1.67 times
+  // the clear view's radiance; 1.23 when the octaves reflected 0.28 of
+  // the light (docs/clouds.md#brightness).
   Shot off = shoot(*renderer_for("earth", false), 400e3, -89.0);
   Shot on = shoot(*renderer_for("earth", true), 400e3, -89.0);
   EXPECT_FALSE(off.clouds_ran);
@@ -70,7 +72,8 @@ TEST(CloudPassGLTest, WithoutCloudsOrWithThemOffAFrameKeepsItsBytes) {
   }
   std::printf("from 400 km, mean green radiance: clear %.4g, clouds %.4g\n",
               sum_off / (kWidth * kHeight), sum_on / (kWidth * kHeight));
-  EXPECT_GT(sum_on, 1.15 * sum_off);
+  EXPECT_GT(sum_on, 1.5 * sum_off);
+  EXPECT_LT(sum_on, 2.0 * sum_off);
 }
 
 // From 400 km across the limb (128x64, the planet's edge a curve across
