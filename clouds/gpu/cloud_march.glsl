@@ -159,6 +159,20 @@ bool cloud_ray(ivec2 at, out CloudRay ray) {
   return ray.first + ray.second > 0.0;
 }
 
+// What decides a pixel's clouds besides its direction (x, y), for the
+// blend to full resolution (cloud_upsample.glsl): the length of its way
+// through the layer before its surface (x) and where the march ends (y):
+// in the open sky (-1, along its own direction over the lifted horizon);
+// at a surface below the layer's base (0), whatever the surface's
+// distance, as a ray that met it had left the layer for good; or at a
+// surface in or above the layer, its distance. (0, 0): no layer.
+vec2 cloud_ray_key(CloudRay ray) {
+  if (ray.pixel.depth == 0.0) return vec2(ray.first + ray.second, -1.0);
+  vec3 surface = ray.pixel.camera + ray.pixel.t_surface * ray.pixel.dir;
+  return vec2(ray.first + ray.second,
+              length(surface) < uniform_layer().bottom_radius ? 0.0 : ray.pixel.t_surface);
+}
+
 // What the clouds add to full-resolution pixel `at` (rgb) and their
 // transmittance (a), along its ray (cloud_ray).
 vec4 cloud_march(ivec2 at, CloudRay ray) {

@@ -40,7 +40,8 @@ void CloudPass::draw(const SkyFrame& frame, const shared::CloudLayer& layer,
     height_ = frame.height;
     downsample_ = factor;
     marched_ = make_texture_2d(GL_RGBA32F, marched_width, marched_height);
-    marched_fbo_ = make_framebuffer(marched_.id(), 0);
+    marched_keys_ = make_texture_2d(GL_RG32F, marched_width, marched_height);
+    marched_fbo_ = make_framebuffer({marched_.id(), marched_keys_.id()}, 0);
     full_ = make_texture_2d(GL_RGBA32F, width_, height_);
     full_fbo_ = make_framebuffer(full_.id(), 0);
   }
@@ -67,12 +68,14 @@ void CloudPass::draw(const SkyFrame& frame, const shared::CloudLayer& layer,
   glBindTextureUnit(2, sky_irradiance);
   // The march discards the pixels whose rays meet no clouds: they keep the
   // clear's no clouds.
-  const float no_clouds[4] = {0.0f, 0.0f, 0.0f, 1.0f};
+  const float no_clouds[4] = {0.0f, 0.0f, 0.0f, 1.0f}, no_layer[4] = {0.0f, 0.0f, 0.0f, 0.0f};
   glClearNamedFramebufferfv(marched_fbo_.id(), GL_COLOR, 0, no_clouds);
+  glClearNamedFramebufferfv(marched_fbo_.id(), GL_COLOR, 1, no_layer);
   pass_.begin(marched_fbo_.id(), marched_width, marched_height, march_program_);
   set_march_uniforms(march_program_);
   pass_.draw();
   glBindTextureUnit(3, marched_.id());
+  glBindTextureUnit(4, marched_keys_.id());
   for (const Program* program : {&upsample_program_, &fill_program_}) {
     pass_.begin(full_fbo_.id(), width_, height_, *program);
     set_march_uniforms(*program);

@@ -53,6 +53,7 @@ class CloudPass {
   FullscreenPass pass_;
   int width_ = 0, height_ = 0, downsample_ = 0;
   Texture marched_, full_;  // RGBA32F: the marched pixels, and all of them
+  Texture marched_keys_;    // RG32F: the marched pixels' cloud_ray_key
   Framebuffer marched_fbo_, full_fbo_;
 };
 

@@ -8,19 +8,12 @@
 
 layout(binding = 3) uniform sampler2D u_marched;
 
-// What decides a pixel's clouds besides its direction (x, y): the length
-// of its way through the layer before its surface (x; 0 where it meets
-// none) and where the march ends (y): in the open sky (-1, along its own
-// direction over the lifted horizon); at a surface below the layer's base
-// (0), whatever the surface's distance, as a ray that met it had left the
-// layer for good; or at a surface in or above the layer, its distance.
+layout(binding = 4) uniform sampler2D u_marched_keys;  // cloud_ray_key of each
+
+// Full-resolution pixel `pixel`'s cloud_ray_key.
 vec2 cloud_march_key(ivec2 pixel) {
   CloudRay ray;
-  if (!cloud_ray(pixel, ray)) return vec2(0.0);
-  if (ray.pixel.depth == 0.0) return vec2(ray.first + ray.second, -1.0);
-  vec3 surface = ray.pixel.camera + ray.pixel.t_surface * ray.pixel.dir;
-  return vec2(ray.first + ray.second,
-              length(surface) < uniform_layer().bottom_radius ? 0.0 : ray.pixel.t_surface);
+  return cloud_ray(pixel, ray) ? cloud_ray_key(ray) : vec2(0.0);
 }
 
 // Whether two pixels' marches are alike: neither meets the layer, or both
@@ -53,7 +46,7 @@ vec4 cloud_upsampled(ivec2 at) {
     for (int i = 0; i < 2; ++i) {
       float w = (i == 0 ? 1.0 - f.x : f.x) * (j == 0 ? 1.0 - f.y : f.y);
       ivec2 low = clamp(base + ivec2(i, j), ivec2(0), marched_size - 1);
-      if (w <= 0.0 || !cloud_same_march(key, cloud_march_key(cloud_source_pixel(low)))) continue;
+      if (w <= 0.0 || !cloud_same_march(key, texelFetch(u_marched_keys, low, 0).xy)) continue;
       sum += w * texelFetch(u_marched, low, 0);
       total += w;
     }
