@@ -272,8 +272,7 @@ std::vector<Pass> FrameRenderer::radiance_passes(const Frame& f, AtmosphereTechn
       [&f] { return f.sky; }, [this, &f, technique] { draw_atmosphere(f, *technique); }));
   // The clouds over the sky and the ground, in radiance.
   out.push_back(frame_pass(
-      prefix + "clouds", {prefix + "atmosphere"},
-      [this, &f] { return f.sky && !f.display_values && options_.clouds && clouds_.has_value(); },
+      prefix + "clouds", {prefix + "atmosphere"}, [this, &f] { return clouds_drawn(f); },
       [this, &f, technique] { draw_clouds(f, *technique); }));
   // The partly covered pixels of the radiance take the rest from the open
   // ones beside them.
@@ -456,6 +455,10 @@ void FrameRenderer::draw_atmosphere(const Frame& f, AtmosphereTechnique& techniq
   technique.render(sky, timer_);
 }
 
+bool FrameRenderer::clouds_drawn(const Frame& f) const {
+  return f.sky && !f.display_values && options_.clouds && clouds_.has_value();
+}
+
 void FrameRenderer::draw_clouds(const Frame& f, const AtmosphereTechnique& technique) {
   if (!cloud_pass_) cloud_pass_ = std::make_unique<CloudPass>();
   SkyFrame sky;
@@ -487,6 +490,7 @@ void FrameRenderer::draw_stars(const Frame& f) {
     }
     view.atmo_scale = f.atmo_scale;
     view.scale = f.display_values ? float(f.exposure) : 1.0f;
+    if (clouds_drawn(f)) view.clouds = cloud_pass_->clouds_texture();
     glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, atmosphere_block_.id());
   }
   const GLuint target = f.sky ? hdr_fbo_.id() : surface_fbo_.id();

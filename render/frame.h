@@ -181,6 +181,8 @@ class FrameRenderer {
 
   void draw_surfaces(const Frame& f, const AtmosphereTechnique* technique);
   void draw_atmosphere(const Frame& f, AtmosphereTechnique& technique);
+  // Whether the frame's clouds pass runs (and dims the stars).
+  bool clouds_drawn(const Frame& f) const;
   void draw_clouds(const Frame& f, const AtmosphereTechnique& technique);
   // The terrain's shadow in the air for the frame, needed by a technique
   // that draws it but for none when off, over a smooth body or high up;

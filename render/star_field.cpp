@@ -64,7 +64,9 @@ void StarField::draw(GLuint target, int width, int height, GLuint depth, const C
   glUniform3fv(program_.uniform("u_atmo_scale"), 1, glm::value_ptr(glm::vec3(view.atmo_scale)));
   glUniform3fv(program_.uniform("u_camera_atmo"), 1,
                glm::value_ptr(glm::vec3(view.atmo_scale * camera.pos_body)));
+  glUniform1i(program_.uniform("u_has_clouds"), view.clouds != 0 ? 1 : 0);
   glBindTextureUnit(0, depth);
+  glBindTextureUnit(1, view.clouds);
   glBindVertexArray(vao_.id());
   glDrawArrays(GL_POINTS, 0, count_);
   glBindVertexArray(0);

@@ -31,6 +31,9 @@ struct StarView {
   // Multiplies the radiance: 1, or the exposure where the target holds
   // display values.
   float scale = 1.0f;
+  // The frame's clouds (CloudPass::clouds_texture(), their transmittance
+  // in alpha), which dim the stars behind them; 0: none drawn.
+  GLuint clouds = 0;
 };
 
 class StarField {

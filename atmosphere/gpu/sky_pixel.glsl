@@ -17,10 +17,12 @@ struct SkyPixel {
   float r_camera;   // the camera's distance from the centre before the lift
 };
 
-SkyPixel sky_pixel(Atmosphere atmosphere, sampler2D depth_texture, sampler2D surface_texture,
-                   vec2 ndc, mat3 ray_from_ndc, float near, vec3 camera) {
+// The pixel `pixel` of the depth and surface textures, whose centre is at
+// `ndc`: for a pass that works on other pixels than its fragment's (the
+// clouds' march at a lower resolution).
+SkyPixel sky_pixel_at(Atmosphere atmosphere, sampler2D depth_texture, sampler2D surface_texture,
+                      ivec2 pixel, vec2 ndc, mat3 ray_from_ndc, float near, vec3 camera) {
   SkyPixel p;
-  ivec2 pixel = ivec2(gl_FragCoord.xy);
   p.depth = texelFetch(depth_texture, pixel, 0).r;
   p.surface = p.depth > 0.0 ? texelFetch(surface_texture, pixel, 0).rgb : vec3(0.0);
   vec3 ray = ray_from_ndc * vec3(ndc, 1.0);
@@ -35,6 +37,12 @@ SkyPixel sky_pixel(Atmosphere atmosphere, sampler2D depth_texture, sampler2D sur
   }
   if (p.depth == 0.0) p.dir = over_the_lifted_horizon(atmosphere, p.camera, p.r_camera, p.dir);
   return p;
+}
+
+SkyPixel sky_pixel(Atmosphere atmosphere, sampler2D depth_texture, sampler2D surface_texture,
+                   vec2 ndc, mat3 ray_from_ndc, float near, vec3 camera) {
+  return sky_pixel_at(atmosphere, depth_texture, surface_texture, ivec2(gl_FragCoord.xy), ndc,
+                      ray_from_ndc, near, camera);
 }
 
 // Where the air in front of the pixel's surface ends, as a radius: at the

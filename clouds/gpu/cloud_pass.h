@@ -19,6 +19,10 @@ struct CloudQuality {
   // exp() a sample; below 6 the inside of a thick cloud and its base
   // from below go nearly black.
   int octaves = 6;
+  // The march at one pixel in each block of downsample x downsample, the
+  // rest blended from the marched ones that see the same surface
+  // (clouds_upsample.frag): 1 marches every pixel.
+  int downsample = 2;
 };
 
 // CloudLayer's twelve fields in their order, as the shaders' vec4
@@ -35,11 +39,22 @@ class CloudPass {
   // atmosphere's uniform block bound at its binding; `sky_irradiance` the
   // technique's ground_irradiance() (0: none, estimated).
   void draw(const SkyFrame& frame, const shared::CloudLayer& layer, const CloudQuality& quality,
-            GLuint sky_irradiance) const;
+            GLuint sky_irradiance);
+
+  // The last draw's clouds at full resolution: rgb what they added, alpha
+  // their transmittance (which dims the stars behind them).
+  GLuint clouds_texture() const { return full_.id(); }
 
  private:
-  Program program_;
+  Program march_program_;
+  Program upsample_program_;
+  Program fill_program_;
+  Program blend_program_;
   FullscreenPass pass_;
+  int width_ = 0, height_ = 0, downsample_ = 0;
+  Texture marched_, full_;  // RGBA32F: the marched pixels, and all of them
+  Texture marched_keys_;    // RG32F: the marched pixels' cloud_ray_key
+  Framebuffer marched_fbo_, full_fbo_;
 };
 
 }  // namespace planet

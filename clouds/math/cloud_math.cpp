@@ -14,6 +14,7 @@ using namespace glm;
 #include "clouds/shaders/cloud_noise.glsl"
 #include "clouds/shaders/cloud_density.glsl"
 #include "clouds/shaders/cloud_phase.glsl"
+#include "clouds/shaders/cloud_scattering.glsl"
 // clang-format on
 #undef IN
 #undef OUT

@@ -30,4 +30,7 @@ Real draine_phase(Real g, Real alpha, Real nu);
 Real3 cloud_mie_fit_lobes(Real d, Real& w_d);
 Real cloud_phase(Real droplet_diameter_um, Real nu);
 
+// cloud_scattering.glsl
+Real cloud_octaves(Real phase, Real tau_sun, Real mu_s, int octaves);
+
 }  // namespace planet::shared

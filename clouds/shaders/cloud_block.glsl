@@ -8,3 +8,4 @@
 #include "clouds/shaders/cloud_noise.glsl"
 #include "clouds/shaders/cloud_density.glsl"
 #include "clouds/shaders/cloud_phase.glsl"
+#include "clouds/shaders/cloud_scattering.glsl"

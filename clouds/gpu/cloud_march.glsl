@@ -1,18 +1,18 @@
-// The cloud layer over the frame's radiance, marched along each pixel's
+// The cloud layer over the frame's radiance (cloud_march: what the clouds
+// add to a pixel and their transmittance), marched along a pixel's
 // view ray through the layer's shell (from the ground, inside it and from
 // orbit, one march: no switch between views). Each sample is lit by the
 // sun through the air (the shared transmittance, and the planet's shadow)
 // and the clouds toward the sun, with multiple scattering by Wrenninge et
-// al. 2013's octaves ("Production Volume Rendering", SIGGRAPH course,
-// sec. 5.4: octave i takes a^i of the optical depth toward the sun, b^i of
-// the light and a phase c^i as eccentric; a = 1/4, b = c = 1/2, within
-// their a <= b that keeps energy: with a = 1/2 a cumulus of optical depth
-// 30 toward the sun sends back a fifth of what a = 1/4 does, and looks
-// grey from orbit), plus the sky's
+// al. 2013's octaves (cloud_octaves in cloud_scattering.glsl, a = 1/4:
+// with a = 1/2 a cumulus of optical depth 30 toward the sun sends back a
+// fifth of what a = 1/4 does, and looks grey from orbit), plus the sky's
 // light as an isotropic ambient. Then the air in front of the clouds
 // (aerial perspective) is marched to their transmittance-weighted distance:
 // out = T_air L_clouds + (1 - T_clouds) S_air, blended over the radiance
-// behind as out + T_clouds * behind (GL_ONE, GL_SRC_ALPHA).
+// behind as out + T_clouds * behind (GL_ONE, GL_SRC_ALPHA). Included by
+// clouds_march.frag (at the pass's resolution) and, through
+// cloud_upsample.glsl, by the passes that bring it to full resolution.
 #include "atmosphere/shaders/atmosphere_block.glsl"
 
 // The sun's light through the air by quadrature, as the terrain's lighting
@@ -27,9 +27,7 @@ Real3 transmittance_lookup(IN(Atmosphere) atmosphere, Real r, Real mu) {
 #include "clouds/shaders/cloud_noise.glsl"
 #include "clouds/shaders/cloud_density.glsl"
 #include "clouds/shaders/cloud_phase.glsl"
-
-in vec2 v_ndc;
-layout(location = 0) out vec4 o_radiance;
+#include "clouds/shaders/cloud_scattering.glsl"
 
 layout(binding = 0) uniform sampler2D u_depth;
 layout(binding = 1) uniform sampler2D u_surface;
@@ -43,6 +41,16 @@ uniform vec4 u_layer[3];  // CloudLayer's twelve fields in order
 uniform int u_steps;        // samples along the view ray in the layer
 uniform int u_light_steps;  // samples toward the sun from each
 uniform int u_octaves;      // Wrenninge's octaves (1: single scattering)
+uniform ivec2 u_size;       // the full-resolution target's
+uniform int u_factor;       // full-resolution pixels per marched one, each way
+
+// The centre of a full-resolution pixel in NDC.
+vec2 cloud_pixel_ndc(ivec2 pixel) { return (vec2(pixel) + 0.5) / vec2(u_size) * 2.0 - 1.0; }
+
+// The full-resolution pixel that marched pixel `low` stands for: the one
+// at its block's centre (the upper right of the middle four), inside the
+// image.
+ivec2 cloud_source_pixel(ivec2 low) { return min(low * u_factor + u_factor / 2, u_size - 1); }
 
 CloudLayer uniform_layer() {
   return CloudLayer(u_layer[0].x, u_layer[0].y, u_layer[0].z, u_layer[0].w, u_layer[1].x,
@@ -101,12 +109,31 @@ void air_segment(Atmosphere atmosphere, vec3 origin, vec3 dir, float len, out ve
   transmittance = exp(-depth);
 }
 
-void main() {
-  o_radiance = vec4(0.0, 0.0, 0.0, 1.0);
+// The weather at kWeatherNodes points spread over a ray's way through the
+// layer as its samples are (s = u^2), and linearly between: it varies over
+// the weather's cells (250 km for Earth), and taken at each of 32 samples
+// it was 5 of a sample's 22 value noises.
+const int kWeatherNodes = 5;
+
+// A pixel's view ray and its stretches in the layer's shell before the
+// surface: the first from t_enter, and a second from t_again.
+struct CloudRay {
+  SkyPixel pixel;
+  float t_enter, first;   // the first stretch's start and length
+  float t_again, second;  // the second's, 0 without one
+};
+
+// Full-resolution pixel `at`'s ray; false where it meets no cloud layer
+// before its surface. The passes discard those pixels (over a target
+// cleared to no clouds) rather than return early: llvmpipe runs a block
+// of pixels in lockstep and skips the march only where a whole block has
+// been discarded.
+bool cloud_ray(ivec2 at, out CloudRay ray) {
   Atmosphere atmosphere = block_atmosphere();
   CloudLayer layer = uniform_layer();
-  SkyPixel pixel = sky_pixel(atmosphere, u_depth, u_surface, v_ndc, u_ray_from_ndc, u_near,
-                             u_camera);
+  ray.pixel = sky_pixel_at(atmosphere, u_depth, u_surface, at, cloud_pixel_ndc(at),
+                           u_ray_from_ndc, u_near, u_camera);
+  SkyPixel pixel = ray.pixel;
   // The ray's stretches in the layer's shell: the first (ray_shell), and
   // for a ray that dips below the base from inside the layer and misses
   // the ground, the second where it comes back up: seen from just below
@@ -114,7 +141,7 @@ void main() {
   // horizon jump as the camera crossed the base.
   float t_enter, t_exit;
   if (!ray_shell(pixel.camera, pixel.dir, layer.bottom_radius, layer.top_radius, t_enter, t_exit)) {
-    return;
+    return false;
   }
   float t_again = 0.0, t_again_exit = 0.0;
   float base_near, base_far, top_near, top_far;
@@ -125,10 +152,36 @@ void main() {
     t_again_exit = min(top_far, pixel.t_surface);
   }
   t_exit = min(t_exit, pixel.t_surface);
-  float first = max(t_exit - t_enter, 0.0);
-  float second = max(t_again_exit - t_again, 0.0);
+  ray.t_enter = t_enter;
+  ray.first = max(t_exit - t_enter, 0.0);
+  ray.t_again = t_again;
+  ray.second = max(t_again_exit - t_again, 0.0);
+  return ray.first + ray.second > 0.0;
+}
+
+// What decides a pixel's clouds besides its direction (x, y), for the
+// blend to full resolution (cloud_upsample.glsl): the length of its way
+// through the layer before its surface (x) and where the march ends (y):
+// in the open sky (-1, along its own direction over the lifted horizon);
+// at a surface below the layer's base (0), whatever the surface's
+// distance, as a ray that met it had left the layer for good; or at a
+// surface in or above the layer, its distance. (0, 0): no layer.
+vec2 cloud_ray_key(CloudRay ray) {
+  if (ray.pixel.depth == 0.0) return vec2(ray.first + ray.second, -1.0);
+  vec3 surface = ray.pixel.camera + ray.pixel.t_surface * ray.pixel.dir;
+  return vec2(ray.first + ray.second,
+              length(surface) < uniform_layer().bottom_radius ? 0.0 : ray.pixel.t_surface);
+}
+
+// What the clouds add to full-resolution pixel `at` (rgb) and their
+// transmittance (a), along its ray (cloud_ray).
+vec4 cloud_march(ivec2 at, CloudRay ray) {
+  Atmosphere atmosphere = block_atmosphere();
+  CloudLayer layer = uniform_layer();
+  SkyPixel pixel = ray.pixel;
+  float t_enter = ray.t_enter, t_again = ray.t_again;
+  float first = ray.first, second = ray.second;
   float segment = first + second;
-  if (segment <= 0.0) return;
   // Each stretch rebased at its entry, as the sky's marches are: far away
   // the camera's coordinates have too few bits for the steps. Samples
   // crowd near the entry (s = u^2 over both stretches end to end), where a
@@ -137,7 +190,7 @@ void main() {
   // the cloud tops) turns banding into a fine, deterministic grain.
   vec3 origin = pixel.camera + t_enter * pixel.dir;
   vec3 origin_again = pixel.camera + t_again * pixel.dir;
-  float jitter = float(cloud_hash(uvec3(uvec2(gl_FragCoord.xy), 7u)) >> 8u) / 16777216.0;
+  float jitter = float(cloud_hash(uvec3(uvec2(at), 7u)) >> 8u) / 16777216.0;
   float nu = dot(pixel.dir, u_sun_dir);
   float phase = cloud_phase(layer.droplet_diameter_um, nu);
   vec3 sun = atmosphere.solar_irradiance;
@@ -152,6 +205,14 @@ void main() {
                                          : origin_again + (s - first) * pixel.dir;
     sun_at[k] = sun * sun_visibility(atmosphere, length(q), dot(q, u_sun_dir) / length(q));
   }
+  vec2 weather_at[kWeatherNodes];
+  for (int k = 0; k < kWeatherNodes; ++k) {
+    float u = float(k) / float(kWeatherNodes - 1);
+    float s = segment * u * u;
+    vec3 q = s < first || second <= 0.0 ? origin + min(s, first) * pixel.dir
+                                         : origin_again + (s - first) * pixel.dir;
+    weather_at[k] = cloud_weather(layer, q);
+  }
   vec3 radiance = vec3(0.0);
   float transmittance = 1.0;
   float weighted_t = 0.0, weight = 0.0;
@@ -164,7 +225,9 @@ void main() {
     s_prev = segment * u_next * u_next;
     bool again = s >= first;
     vec3 p = again ? origin_again + (s - first) * pixel.dir : origin + s * pixel.dir;
-    vec2 weather = cloud_weather(layer, p);
+    float node = u * float(kWeatherNodes - 1);
+    int n = min(int(node), kWeatherNodes - 2);
+    vec2 weather = mix(weather_at[n], weather_at[n + 1], node - float(n));
     float density = cloud_eroded_density(layer, p, cloud_shape_density(layer, p, weather));
     if (density <= 0.0) continue;
     float extinction = layer.extinction * density;
@@ -172,13 +235,7 @@ void main() {
     float w = 2.0 * s / segment;
     vec3 sunlight = w < 1.0 ? mix(sun_at[0], sun_at[1], w) : mix(sun_at[1], sun_at[2], w - 1.0);
     float tau_sun = optical_depth_to_sun(layer, p, weather);
-    // Wrenninge's octaves.
-    float octaves = 0.0, b = 1.0, a = 1.0;
-    for (int k = 0; k < u_octaves; ++k) {
-      octaves += b * mix(isotropic_phase(), phase, b) * exp(-a * tau_sun);
-      b *= 0.5;
-      a *= 0.25;
-    }
+    float octaves = cloud_octaves(phase, tau_sun, dot(p, u_sun_dir) / r, u_octaves);
     // The sky's light: its irradiance on level ground at p as an isotropic
     // radiance E / pi from the upper half of the sphere (half of it
     // scattered toward any direction), dimmer toward the layer's base,
@@ -199,8 +256,8 @@ void main() {
     transmittance *= step_transmittance;
     if (transmittance < 1e-3) break;
   }
-  if (weight <= 0.0) return;
+  if (weight <= 0.0) return vec4(0.0, 0.0, 0.0, 1.0);
   vec3 inscatter, air;
   air_segment(atmosphere, pixel.camera, pixel.dir, weighted_t / weight, inscatter, air);
-  o_radiance = vec4(air * radiance + (1.0 - transmittance) * inscatter, transmittance);
+  return vec4(air * radiance + (1.0 - transmittance) * inscatter, transmittance);
 }
