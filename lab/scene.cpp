@@ -168,10 +168,10 @@ std::vector<Scene> eclipse_scenes() {
     (sun_share(s, sun_radius, s.camera.pos_body) < 0.1 ? lo : hi) = mid;
   }
   partial = place(partial, {lo, eclipse->point.lon, 2.0});
-  // From 400 km over the place 8 degrees north of the centre (890 km),
-  // looking south 30 degrees down: the umbra 26 degrees below the
-  // horizontal, the penumbra about it and the limb, 20 degrees down, across
-  // the top.
+  // From 400 km over the place 4 degrees north of the centre (445 km),
+  // looking south 40 degrees down: the umbra near the middle of the view
+  // (about 44 degrees below the horizontal), the penumbra about it, and the
+  // limb, 20 degrees down, across the top of the field (10 to 70 down).
   Scene orbit = total;
   orbit.name = "earth_eclipse_400km";
   orbit.description =
