@@ -1,6 +1,9 @@
-// The Moon's shadow in the frame (FrameRenderer::set_moon): the raymarch
-// and hillaire techniques multiply the sun at each sample of their marches
-// by the visible share there (occluded_sun.glsl), as the ground truth does.
+// The Moon's shadow in the frame (FrameRenderer::set_moon): the techniques
+// multiply the sun at each sample of their marches by the visible share
+// there (occluded_sun.glsl), as the ground truth does, and the terrain's
+// ground takes the share of the sun's light at each point.
+#include "atmosphere/gpu/registry.h"
+#include "atmosphere/math/shared_math.h"
 #include "core/data_paths.h"
 #include "gl/context.h"
 #include "lab/accuracy.h"
@@ -8,8 +11,10 @@
 #include "lab/reference_cache.h"
 #include "lab/scene.h"
 #include "render/capture.h"
+#include "render/frame.h"
 #include "terrain/ground.h"
 #include "tests/atmosphere/accuracy_guard.h"
+#include "tests/render/view_from_place.h"
 
 #include <fmt/format.h>
 #include <gtest/gtest.h>
@@ -123,6 +128,100 @@ TEST(EclipseGLTest, HillairesSkyTakesTheShareAlongItsRaysAndHoldsThePartialPhase
         EXPECT_LE(e, 2.0) << "RGB"[k];
       }
     }
+  }
+}
+
+// The ground under the Moon's shadow: a 64x64 frame from 2 m over a smooth
+// Earth looking 45 degrees down (every pixel ground within 10 m), the sun
+// 50 degrees up, drawn by raymarch (whose air takes the share too) with
+// and without the sky's light on the ground; the Moon 360 000 km from the
+// camera toward the sun (1.04 of the sun's radius: total), or beside it.
+class EclipsedGround {
+ public:
+  EclipsedGround() : context_(GlContext::create_headless()) {
+    body_ = load_body(data_dir() / "planets" / "earth.json");
+    body_.terrain = nullptr;
+    model_ = load_atmosphere(body_);
+    renderer_ = std::make_unique<FrameRenderer>(kSize, kSize);
+    renderer_->set_body(body_, model_, make_technique("raymarch"));
+    view_ = view_from_place(body_.shape, {glm::radians(30.0), glm::radians(-100.0), 2.0}, 0.0,
+                            -45.0, 30.0, 50.0, 180.0);
+  }
+  // The Moon's centre, kDistance from the camera, `separation` sun radii
+  // from the sun's centre.
+  glm::dvec3 moon_at(double separation) const {
+    glm::dvec3 sun = view_.sun_dir_body;
+    glm::dvec3 side = glm::normalize(glm::cross(sun, glm::dvec3(0, 0, 1)));
+    double angle = separation * model_.sun_angular_radius;
+    return view_.camera.pos_body + kDistance * (std::cos(angle) * sun + std::sin(angle) * side);
+  }
+  // The visible share of the sun at the camera with the Moon there.
+  glm::dvec3 share(const glm::dvec3& moon) const {
+    return shared::occluded_sun_fraction(view_.sun_dir_body, model_.sun_angular_radius,
+                                         moon - view_.camera.pos_body, kMoonRadius);
+  }
+  // The frame's mean radiance with the Moon at `moon` (radius 0: none).
+  glm::dvec3 mean(const glm::dvec3& moon, double moon_radius, bool sky_light) {
+    FrameOptions options = renderer_->options();
+    options.surface_sky_light = sky_light;
+    renderer_->set_options(options);
+    renderer_->set_moon(moon, moon_radius);
+    renderer_->render(view_.camera, view_.sun_dir_body, 10.0);
+    std::vector<float> hdr = renderer_->read_hdr();
+    glm::dvec3 sum(0.0);
+    for (size_t i = 0; i < hdr.size(); i += 4) sum += glm::dvec3(hdr[i], hdr[i + 1], hdr[i + 2]);
+    return sum / double(hdr.size() / 4);
+  }
+
+  static constexpr int kSize = 64;
+  static constexpr double kDistance = 3.6e8;
+  static constexpr double kMoonRadius = 1737.4e3;
+
+ private:
+  std::unique_ptr<GlContext> context_;
+  Body body_;
+  AtmosphereModel model_;
+  std::unique_ptr<FrameRenderer> renderer_;
+  PlaceView view_;
+};
+
+TEST(EclipseGLTest, TheGroundInTheUmbraIsLitByTheSkyAlone) {
+  EclipsedGround ground;
+  const glm::dvec3 moon = ground.moon_at(0.0);
+  ASSERT_EQ(ground.share(moon), glm::dvec3(0.0));
+  glm::dvec3 lit = ground.mean(moon, 0.0, true);
+  glm::dvec3 sun_alone = ground.mean(moon, 0.0, false);
+  glm::dvec3 eclipsed_sun_alone = ground.mean(moon, EclipsedGround::kMoonRadius, false);
+  glm::dvec3 eclipsed = ground.mean(moon, EclipsedGround::kMoonRadius, true);
+  // What the sky's light alone gives the ground (and the few metres of
+  // air before it, which raymarch draws in the sun's light).
+  glm::dvec3 sky_lit = lit - sun_alone;
+  for (int c = 0; c < 3; ++c) {
+    std::printf("%c: lit %.4g, sky-lit %.4g, in the umbra %.4g (sun alone %.3g)\n", "RGB"[c],
+                lit[c], sky_lit[c], eclipsed[c], eclipsed_sun_alone[c]);
+    ASSERT_GT(sky_lit[c], 0.02 * lit[c]);
+    // No sun on the ground in the umbra: black but for the sky's light,
+    // which stays the technique's.
+    EXPECT_LT(eclipsed_sun_alone[c], 1e-4 * lit[c]) << "RGB"[c];
+    EXPECT_NEAR(eclipsed[c], sky_lit[c], 0.01 * sky_lit[c]) << "RGB"[c];
+  }
+}
+
+TEST(EclipseGLTest, TheGroundInThePartialPhaseTakesTheShareOfTheSun) {
+  EclipsedGround ground;
+  // The Moon's limb across the sun's centre: about half the disk's flux.
+  const glm::dvec3 moon = ground.moon_at(1.0);
+  const glm::dvec3 share = ground.share(moon);
+  glm::dvec3 lit = ground.mean(moon, 0.0, false);
+  glm::dvec3 eclipsed = ground.mean(moon, EclipsedGround::kMoonRadius, false);
+  for (int c = 0; c < 3; ++c) {
+    std::printf("%c: share %.4f, ground eclipsed / lit %.4f\n", "RGB"[c], share[c],
+                eclipsed[c] / lit[c]);
+    ASSERT_GT(share[c], 0.3);
+    ASSERT_LT(share[c], 0.7);
+    // The sun alone on the ground and in the few metres of air before it:
+    // both take the share, within float's rounding of the two frames.
+    EXPECT_NEAR(eclipsed[c] / lit[c], share[c], 2e-3) << "RGB"[c];
   }
 }
 
