@@ -166,21 +166,23 @@ TEST(EclipseGLTest, BrunetonAndOneilTakeTheShareOfTheSunAlongTheirRays) {
   }
 }
 
-// The ground under the Moon's shadow: a 64x64 frame from 2 m over a smooth
-// Earth looking 45 degrees down (every pixel ground within 10 m), the sun
-// 50 degrees up, drawn by raymarch (whose air takes the share too) with
-// and without the sky's light on the ground; the Moon 360 000 km from the
-// camera toward the sun (1.04 of the sun's radius: total), or beside it.
+// A 64x64 frame from 2 m over a smooth Earth, the sun 50 degrees up in the
+// south; by default looking 45 degrees down to the north (every pixel
+// ground within 10 m), drawn by raymarch (whose air takes the share too).
+// The Moon 360 000 km from the camera toward the sun (1.04 of the sun's
+// radius: total), or beside it.
 class EclipsedGround {
  public:
-  EclipsedGround() : context_(GlContext::create_headless()) {
+  explicit EclipsedGround(const char* technique = "raymarch", double heading_deg = 0.0,
+                          double pitch_deg = -45.0, double fov_deg = 30.0)
+      : context_(GlContext::create_headless()) {
     body_ = load_body(data_dir() / "planets" / "earth.json");
     body_.terrain = nullptr;
     model_ = load_atmosphere(body_);
     renderer_ = std::make_unique<FrameRenderer>(kSize, kSize);
-    renderer_->set_body(body_, model_, make_technique("raymarch"));
-    view_ = view_from_place(body_.shape, {glm::radians(30.0), glm::radians(-100.0), 2.0}, 0.0,
-                            -45.0, 30.0, 50.0, 180.0);
+    renderer_->set_body(body_, model_, make_technique(technique));
+    view_ = view_from_place(body_.shape, {glm::radians(30.0), glm::radians(-100.0), 2.0},
+                            heading_deg, pitch_deg, fov_deg, 50.0, 180.0);
   }
   // The Moon's centre, kDistance from the camera, `separation` sun radii
   // from the sun's centre.
@@ -195,14 +197,18 @@ class EclipsedGround {
     return shared::occluded_sun_fraction(view_.sun_dir_body, model_.sun_angular_radius,
                                          moon - view_.camera.pos_body, kMoonRadius);
   }
-  // The frame's mean radiance with the Moon at `moon` (radius 0: none).
-  glm::dvec3 mean(const glm::dvec3& moon, double moon_radius, bool sky_light) {
+  // The frame's radiance (RGBA) with the Moon at `moon` (radius 0: none).
+  std::vector<float> hdr(const glm::dvec3& moon, double moon_radius, bool sky_light = true) {
     FrameOptions options = renderer_->options();
     options.surface_sky_light = sky_light;
     renderer_->set_options(options);
     renderer_->set_moon(moon, moon_radius);
     renderer_->render(view_.camera, view_.sun_dir_body, 10.0);
-    std::vector<float> hdr = renderer_->read_hdr();
+    return renderer_->read_hdr();
+  }
+  // Its mean.
+  glm::dvec3 mean(const glm::dvec3& moon, double moon_radius, bool sky_light) {
+    std::vector<float> hdr = this->hdr(moon, moon_radius, sky_light);
     glm::dvec3 sum(0.0);
     for (size_t i = 0; i < hdr.size(); i += 4) sum += glm::dvec3(hdr[i], hdr[i + 1], hdr[i + 2]);
     return sum / double(hdr.size() / 4);
@@ -257,6 +263,33 @@ TEST(EclipseGLTest, TheGroundInThePartialPhaseTakesTheShareOfTheSun) {
     // The sun alone on the ground and in the few metres of air before it:
     // both take the share, within float's rounding of the two frames.
     EXPECT_NEAR(eclipsed[c] / lit[c], share[c], 2e-3) << "RGB"[c];
+  }
+}
+
+TEST(EclipseGLTest, HillairesSunDiskHidesBehindTheMoon) {
+  // Looking at the sun through a 2 degree field: its disk 17 pixels
+  // across, at thousands of times the sky's radiance. The Moon centred on
+  // it hides it all; with its limb across the sun's centre, the part it
+  // covers. A pixel of the disk: green over 100 (the sky's is under 1).
+  auto disk_pixels = [](const std::vector<float>& hdr) {
+    int n = 0;
+    for (size_t i = 0; i < hdr.size(); i += 4) n += hdr[i + 1] > 100.0f ? 1 : 0;
+    return n;
+  };
+  for (const char* technique : {"hillaire", "hillaire2020"}) {
+    EclipsedGround view(technique, 180.0, 50.0, 2.0);
+    const double radius = EclipsedGround::kMoonRadius;
+    int clear = disk_pixels(view.hdr(view.moon_at(0.0), 0.0));
+    int total = disk_pixels(view.hdr(view.moon_at(0.0), radius));
+    int partial = disk_pixels(view.hdr(view.moon_at(1.0), radius));
+    std::printf("%s: pixels of the disk %d clear, %d with the Moon across it, %d behind it\n",
+                technique, clear, partial, total);
+    EXPECT_GT(clear, 150) << technique;
+    EXPECT_EQ(total, 0) << technique;
+    // The Moon (1.04 sun radii) centred on the sun's limb covers 42 % of
+    // the disk's area (the lens of the two circles): 58 % is left.
+    EXPECT_GT(partial, clear / 2) << technique;
+    EXPECT_LT(partial, 2 * clear / 3) << technique;
   }
 }
 
