@@ -296,8 +296,9 @@ TEST(EclipseGLTest, HillairesSunDiskHidesBehindTheMoon) {
 TEST(EclipseGLTest, TheTexasFlightsExposureFollowsTheSkyIntoTotality) {
   // The shipped flight's first frame (18:20 UTC, the partial phase) and
   // frame 14 (18:34, totality): the automatic exposure follows the sky up,
-  // no day-night switch, so that the stars come out. Measured: 20.7 and
-  // 501 at 96x54.
+  // no day-night switch, so that the stars come out. Measured: 21.1 and
+  // 1898 at 96x54 (20.7 and 501 while the ground in a corner of the frame
+  // was lit by the whole sun in totality).
   const GroundHeight ground = terrain_ground();
   FlightScript script = load_flight_script(data_dir() / "flights" / "eclipse_texas.json", ground);
   auto context = GlContext::create_headless();
