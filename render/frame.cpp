@@ -357,6 +357,8 @@ void FrameRenderer::draw_surfaces(const Frame& f, const AtmosphereTechnique* tec
     lighting.sun_angular_radius = atmosphere_->sun_angular_radius;
   }
   lighting.shadows = options_.terrain_shadows;
+  lighting.moon_pos_body = moon_pos_body_;
+  lighting.moon_radius = moon_radius_;
   // Bound even for an airless body (then all zero): the block is declared.
   glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, atmosphere_block_.id());
   terrain_stats_ = terrain_->draw(f.camera, width_, height_, lighting, coverage);

@@ -71,6 +71,16 @@ help)
   for t in hillaire raymarch bruneton oneil; do
     grep -q "$t" "$work/out.txt" || fail "planet techniques does not list $t"
   done
+  # Each technique says whether it takes the Moon's shadow (an eclipse's
+  # occluded sun) and a second light (the Moon's): every one takes the
+  # first, none the second yet.
+  for t in raymarch hillaire bruneton oneil hillaire2020; do
+    block=$(awk -v t="$t" 'index($0, t " (") == 1 { on = 1; next } /^$/ { on = 0 } on' "$work/out.txt")
+    grep -q "^  the Moon's shadow (the occluded sun): yes" <<< "$block" ||
+      fail "planet techniques: $t does not say that it takes the Moon's shadow"
+    grep -q "^  a second light (the Moon's): no$" <<< "$block" ||
+      fail "planet techniques: $t does not say that it draws no second light"
+  done
   version=$(sed -n 's/^project(planet VERSION \([0-9.]*\).*/\1/p' "$PLANET_ROOT/CMakeLists.txt")
   succeed "$planet" --version
   [ "$(cat "$work/out.txt")" = "planet $version" ] ||

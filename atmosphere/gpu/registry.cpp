@@ -76,6 +76,13 @@ std::unique_ptr<AtmosphereTechnique> make_hillaire(const TechniqueChoice& c,
   return std::make_unique<HillaireTechnique>(s);
 }
 
+// The Moon's shadow in hillaire's marches and tables (both variants).
+const char* const kHillaireMoonShadow =
+    "yes: the share at each sample of its marches and tables, the multiply scattered light's as "
+    "the sun's; the disk hidden";
+// No technique draws a second light yet (the Moon's light by night).
+const char* const kNoSecondLight = "no";
+
 const std::vector<std::pair<std::string, std::string>> kHillaireQualityPoints = {
     {"cheap", "sky_view_steps=12,per_pixel_steps=12,aerial_substeps=1"},
     {"default", ""},
@@ -128,6 +135,9 @@ std::vector<TechniqueEntry> make_registry() {
         {"default", ""},
         {"fine", "view_steps=128,light_steps=64"}},
        "",
+       "yes: the share at each sample of its march and on the ground; the disk hidden (exact for "
+       "single scattering)",
+       kNoSecondLight,
        [](const TechniqueChoice& c) {
          return std::make_unique<RaymarchTechnique>(RaymarchTechnique::Steps{
              c.integer("view_steps"), c.integer("light_steps"), c.integer("terrain_shadows") == 1});
@@ -135,7 +145,8 @@ std::vector<TechniqueEntry> make_registry() {
       {"hillaire", "ours, on Hillaire 2020's tables",
        "transmittance, multiple-scattering (six orders to spherical-harmonic degree 4 and a "
        "forward-gain LUT), sky-view and aerial-perspective LUTs; a per-pixel march high up",
-       hillaire_quality(), kHillaireQualityPoints, "multiple=off",
+       hillaire_quality(), kHillaireQualityPoints, "multiple=off", kHillaireMoonShadow,
+       kNoSecondLight,
        [](const TechniqueChoice& c) {
          return make_hillaire(c, HillaireTechnique::MultipleScattering::kOrders);
        }},
@@ -147,21 +158,47 @@ std::vector<TechniqueEntry> make_registry() {
         {"mu_size", "scattering table: view zenith cosines (even)", 4, 512, 256, true, {}},
         {"mu_s_size", "scattering table: sun zenith cosines", 4, 128, 64, true, {}},
         {"nu_size", "scattering table: view-sun cosines", 2, 64, 8, true, {}},
-        {"transmittance_width", "transmittance table: view zenith cosines", 16, 2048, 256, true, {}},
+        {"transmittance_width",
+         "transmittance table: view zenith cosines",
+         16,
+         2048,
+         256,
+         true,
+         {}},
         {"transmittance_height", "transmittance table: altitudes", 4, 1024, 64, true, {}},
         {"irradiance_width", "ground irradiance table: sun zenith cosines", 4, 1024, 64, true, {}},
         {"irradiance_height", "ground irradiance table: altitudes", 2, 256, 16, true, {}},
         {"orders", "orders of scattering iterated", 1, 50, 4, true, {}},
         {"floats", "the scattering tables' floats", 0, 1, 0, true, {"full", "half"}},
-        {"textures", "single Mie in its own table, or its red in the scattering's alpha", 0, 1, 0,
-         true, {"separate", "combined"}},
-        {"integration_steps", "steps along each ray of single and multiple scattering", 4, 500, 50,
-         true, {}},
-        {"sphere_samples", "zenith angles of the gathers over the sphere", 4, 64, 16, true, {}},
-        {"transmittance_steps", "quadrature steps of each transmittance texel", 8, 1000, 100, true,
+        {"textures",
+         "single Mie in its own table, or its red in the scattering's alpha",
+         0,
+         1,
+         0,
+         true,
+         {"separate", "combined"}},
+        {"integration_steps",
+         "steps along each ray of single and multiple scattering",
+         4,
+         500,
+         50,
+         true,
          {}},
-        {"tail", "the orders past the last: left out (Bruneton's), or a geometric series", 0, 1, 1,
-         true, {"none", "geometric"}}},
+        {"sphere_samples", "zenith angles of the gathers over the sphere", 4, 64, 16, true, {}},
+        {"transmittance_steps",
+         "quadrature steps of each transmittance texel",
+         8,
+         1000,
+         100,
+         true,
+         {}},
+        {"tail",
+         "the orders past the last: left out (Bruneton's), or a geometric series",
+         0,
+         1,
+         1,
+         true,
+         {"none", "geometric"}}},
        {{"cheap", "r_size=16,mu_size=64,mu_s_size=16,nu_size=4,orders=2,floats=half"},
         // Bruneton's own 2017 defaults.
         {"bruneton2017",
@@ -170,8 +207,12 @@ std::vector<TechniqueEntry> make_registry() {
         {"fine", "nu_size=16,orders=8,sphere_samples=24"}},
        // One order: no tail (it needs three), no sky light on the ground.
        "orders=1",
+       "yes, one share per view ray: the mean along it, weighted as its single scattering, for "
+       "every order; the ground's sun at its point; the disk hidden",
+       kNoSecondLight,
        make_bruneton},
-      {"oneil", "O'Neil 2005 (GPU Gems 2, ch. 16)",
+      {"oneil",
+       "O'Neil 2005 (GPU Gems 2, ch. 16)",
        "single scattering per vertex of a sky dome and of a screen-space grid over the surfaces, "
        "the optical depths from a scale function fitted to the body's scale heights",
        // 8 samples: on earth_noon, 5 (the chapter's) left the sky 8-10 % (relative RMSE)
@@ -180,20 +221,31 @@ std::vector<TechniqueEntry> make_registry() {
        {{"samples", "samples along each vertex's ray", 2, 16, 8, true, {}},
         {"dome", "the sky dome's rings (twice as many segments around)", 4, 256, 48, true, {}},
         {"cell", "pixels between the vertices of the surfaces' grid", 1, 64, 8, true, {}},
-        {"scale", "the scale function: fitted to the body, or the chapter's polynomial", 0, 1, 0,
-         true, {"fitted", "chapter"}},
+        {"scale",
+         "the scale function: fitted to the body, or the chapter's polynomial",
+         0,
+         1,
+         0,
+         true,
+         {"fitted", "chapter"}},
         {"exposure",
          "radiance for the frame's tone map, or the chapter's 1 - exp(-exposure L) display values",
-         0, 1, 0, true, {"tone_map", "chapter"}}},
+         0,
+         1,
+         0,
+         true,
+         {"tone_map", "chapter"}}},
        {{"cheap", "samples=4,dome=24,cell=16"},
         {"chapter", "samples=5,scale=chapter"},
         {"default", ""},
         {"fine", "samples=16,dome=96,cell=4"}},
        "",
+       "yes: the share at each sample of its single scattering and on the ground; the disk hidden",
+       kNoSecondLight,
        make_oneil},
       {"hillaire2020", "Hillaire 2020",
        "the paper's LUTs, with its multiple scattering Psi = L2 / (1 - f_ms)", hillaire_quality(),
-       kHillaireQualityPoints, "multiple=off",
+       kHillaireQualityPoints, "multiple=off", kHillaireMoonShadow, kNoSecondLight,
        [](const TechniqueChoice& c) {
          return make_hillaire(c, HillaireTechnique::MultipleScattering::kPaper);
        }},
@@ -361,6 +413,8 @@ std::string describe_techniques() {
     out += fmt::format("  quality points for the lab: {}\n", fmt::join(points, ", "));
     out += fmt::format("  single scattering alone (the lab's split by order): {}\n",
                        t.single_scattering.empty() ? "as it is" : t.name + ":" + t.single_scattering);
+    out += fmt::format("  the Moon's shadow (the occluded sun): {}\n", t.moon_shadow);
+    out += fmt::format("  a second light (the Moon's): {}\n", t.second_light);
   }
   return out;
 }

@@ -49,6 +49,11 @@ struct TechniqueEntry {
   // alone (empty: it draws nothing else), for the lab's split of its error
   // into the first order and the orders above it.
   std::string single_scattering;
+  // How it takes the Moon's shadow in an eclipse (the sun's visible share,
+  // occluded_sun.glsl), "no" where it does not; and the same for a second
+  // light beside the sun (the Moon's): for `planet techniques`.
+  std::string moon_shadow;
+  std::string second_light;
   // Needs a current GL context.
   std::function<std::unique_ptr<AtmosphereTechnique>(const TechniqueChoice&)> make;
 };

@@ -17,6 +17,9 @@ uniform vec3 u_camera;  // atmosphere space, metres
 uniform mat3 u_ray_from_ndc;
 uniform vec3 u_sun_dir;
 uniform float u_near;
+// The Moon's centre (atmosphere space) and radius, which hides the disk
+// where it lies before it; none while the radius is 0 (SkyFrame).
+uniform vec4 u_moon;
 
 void main() {
   Atmosphere atmosphere = block_atmosphere();
@@ -24,7 +27,10 @@ void main() {
 #ifdef NO_SUN_DISK
   vec3 radiance = pixel.surface;
 #else
-  vec3 radiance = pixel.surface + sun_disk_radiance(atmosphere, dot(pixel.dir, u_sun_dir));
+  vec3 radiance = pixel.surface;
+  if (!moon_hides_sun(pixel.camera, pixel.dir, u_moon.xyz, u_moon.w)) {
+    radiance += sun_disk_radiance(atmosphere, dot(pixel.dir, u_sun_dir));
+  }
 #endif
   o_radiance = vec4(min(radiance, vec3(6.0e4)), 1.0);
 }

@@ -17,6 +17,8 @@ using namespace shared;
 #define IN(T) const T&
 #define OUT(T) T&
 #define INOUT(T) T&
+// The CPU's skies have no Moon (oneil_functions.glsl's includer's).
+Real3 eclipse_sun_share(IN(Real3), IN(Real3)) { return Real3(1.0); }
 // clang-format off
 #include "atmosphere/shaders/oneil_functions.glsl"
 // clang-format on

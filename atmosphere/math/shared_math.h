@@ -65,6 +65,7 @@ Real3 sun_disk_radiance(const Atmosphere& atmosphere, Real cos_angle);
 Real circle_overlap_area(Real a, Real b, Real d);
 Real3 sun_flux_within(Real x);
 Real3 occluded_sun_fraction(Real3 sun_dir, Real sun_radius, Real3 moon_centre, Real moon_radius);
+bool moon_hides_sun(Real3 o, Real3 d, Real3 moon_centre, Real moon_radius);
 
 // The model as the shared functions see it.
 Atmosphere to_shared(const AtmosphereModel& model);

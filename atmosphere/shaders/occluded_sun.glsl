@@ -72,3 +72,12 @@ Real3 occluded_sun_fraction(Real3 sun_dir, Real sun_radius, Real3 moon_centre, R
   }
   return clamp(Real3(1.0) - covered, Real3(0.0), Real3(1.0));
 }
+
+// The sun's disk seen along the ray from o (unit direction d) is hidden
+// where the ray meets the Moon's sphere ahead (its centre and radius, as
+// above; none while the radius is 0).
+bool moon_hides_sun(Real3 o, Real3 d, Real3 moon_centre, Real moon_radius) {
+  Real t_near, t_far;
+  return moon_radius > Real(0.0) && ray_sphere(o - moon_centre, d, moon_radius, t_near, t_far) &&
+         t_far > Real(0.0);
+}

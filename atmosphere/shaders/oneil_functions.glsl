@@ -37,6 +37,9 @@
 // upward one from the start.
 //
 // The constants and the scale function's type are in oneil_definitions.glsl.
+// The includer declares Real3 eclipse_sun_share(IN(Real3) p, IN(Real3)
+// sun_dir), the visible share of the sun at p with the Moon before it
+// (occluded_sun.glsl; 1 but in an eclipse, and on the CPU).
 
 // The chapter's polynomial, in multiples of the vertical column H.
 Real oneil_chapter_scale(Real mu) {
@@ -198,7 +201,10 @@ void oneil_single_scattering(IN(Atmosphere) atmosphere, IN(OneilScale) rayleigh,
     Real2 to_camera = max(hits_ground ? p_columns - a_columns : a_columns - p_columns, Real2(0.0));
     Real2 to_sun = Real2(oneil_column(atmosphere, rayleigh, r, mu_s),
                          oneil_column(atmosphere, mie, r, mu_s));
-    Real3 attenuation = exp(-oneil_extinction(atmosphere, to_camera + to_sun));
+    // In an eclipse, the Moon's share of the sun at the sample (the
+    // includer's; 1 exactly with no Moon, so that it changes no other sky).
+    Real3 attenuation = exp(-oneil_extinction(atmosphere, to_camera + to_sun)) *
+                        eclipse_sun_share(p, sun_dir);
     rayleigh_light += exp(-h / rayleigh.scale_height) * ds * attenuation;
     mie_light += exp(-h / mie.scale_height) * ds * attenuation;
   }

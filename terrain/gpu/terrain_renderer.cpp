@@ -142,6 +142,12 @@ void TerrainRenderer::set_uniforms(const Program& program, const Camera& camera,
   // The shadow's edge: the sun's disc, and at least 0.14 degree, a little
   // over the horizon coding's step near level, so that it does not band.
   glUniform1f(program.uniform("u_penumbra"), float(std::max(lighting.sun_angular_radius, 0.0025)));
+  glUniform1f(program.uniform("u_sun_angular_radius"), float(lighting.sun_angular_radius));
+  // The Moon less the eye in double: float then holds it to 30 m at its
+  // distance, 2e-5 of its radius.
+  const glm::vec3 moon_rel_eye(lighting.moon_pos_body - camera.pos_body);
+  glUniform4f(program.uniform("u_moon_rel_eye"), moon_rel_eye.x, moon_rel_eye.y, moon_rel_eye.z,
+              float(lighting.moon_radius));
   if (lighting.has_atmosphere) {
     glm::dvec3 scale = lighting.atmo_scale;
     glUniform3fv(program.uniform("u_atmo_scale"), 1, glm::value_ptr(glm::vec3(scale)));

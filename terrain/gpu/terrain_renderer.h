@@ -55,6 +55,11 @@ struct TerrainLighting {
   // and the sun's angular radius, which softens their edges.
   bool shadows = true;
   double sun_angular_radius = 0.00465;
+  // The Moon before the sun (an eclipse): its centre in the body frame and
+  // its radius, metres (0: none). The sun's light on the ground is then the
+  // visible share of its disk there (occluded_sun.glsl).
+  glm::dvec3 moon_pos_body{0.0};
+  double moon_radius = 0;
 };
 
 class TerrainRenderer {

@@ -36,6 +36,57 @@ uniform vec3 u_camera;  // atmosphere space, metres
 uniform mat3 u_ray_from_ndc;
 uniform vec3 u_sun_dir;
 uniform float u_near;
+// The Moon's centre (atmosphere space) and radius; none while the radius
+// is 0 (SkyFrame).
+uniform vec4 u_moon;
+
+// In an eclipse, the share of the sun a view ray's light takes from the
+// Moon, one per ray: the tables hold a sun the same for the whole sky, so
+// the ray's light, of every order, is multiplied by the mean of the
+// visible share at points along it from t_start to t_end (to the top, the
+// ground or a surface), weighted as its single scattering would weigh them
+// (the air's extinction there times the transmittance back to the camera;
+// the sun's own path left out). The first order's share is then right to
+// that approximation, and the orders above it are taken as if the shadow
+// were as wide as their light's reach (docs/eclipses.md#the-frame).
+// 1 exactly with no Moon, so that it changes no other sky.
+const int kEclipseShareSamples = 16;
+vec3 eclipse_share_along(Atmosphere atmosphere, vec3 camera, vec3 dir, float t_end) {
+  if (u_moon.w <= 0.0) return vec3(1.0);
+  float t_near, t_far;
+  if (!ray_sphere(camera, dir, atmosphere.top_radius, t_near, t_far) || t_far <= 0.0) {
+    return vec3(1.0);
+  }
+  float t_start = max(t_near, 0.0);
+  float span = max(min(t_end, t_far) - t_start, 0.0);
+  vec3 weighted = vec3(0.0), weights = vec3(0.0), depth = vec3(0.0);
+  // Crowded toward the start (t = span u^2), where a view from the ground
+  // takes most of its light.
+  for (int i = 0; i < kEclipseShareSamples; ++i) {
+    float u = (float(i) + 0.5) / float(kEclipseShareSamples);
+    float dt = span * 2.0 * u / float(kEclipseShareSamples);
+    vec3 p = camera + (t_start + span * u * u) * dir;
+    vec3 extinction = extinction_at(atmosphere, max(length(p) - atmosphere.bottom_radius, 0.0));
+    vec3 w = extinction * dt * exp(-(depth + 0.5 * extinction * dt));
+    depth += extinction * dt;
+    weighted += w * occluded_sun_fraction(u_sun_dir, atmosphere.sun_angular_radius,
+                                          u_moon.xyz - p, u_moon.w);
+    weights += w;
+  }
+  return weighted / max(weights, vec3(1e-30));
+}
+
+// The share of the sun's own light at p (the ground's), 1 with no Moon.
+vec3 eclipse_share_at(Atmosphere atmosphere, vec3 p) {
+  if (u_moon.w <= 0.0) return vec3(1.0);
+  return occluded_sun_fraction(u_sun_dir, atmosphere.sun_angular_radius, u_moon.xyz - p, u_moon.w);
+}
+
+// The sun's disk where the Moon does not hide it.
+vec3 visible_sun_disk(Atmosphere atmosphere, vec3 camera, vec3 dir) {
+  if (moon_hides_sun(camera, dir, u_moon.xyz, u_moon.w)) return vec3(0.0);
+  return sun_disk_radiance(atmosphere, dot(dir, u_sun_dir));
+}
 
 // The scattering table and single Mie at (r, mu, mu_s, nu); with COMBINED,
 // Mie's red only, the rest rebuilt from the ratio of the coefficients
@@ -83,7 +134,11 @@ vec3 sky_radiance(Atmosphere atmosphere, vec3 camera, vec3 dir, out vec3 transmi
   transmittance = ground ? vec3(0.0) : bruneton_transmittance_to_top(atmosphere, u_transmittance, r, mu);
   vec3 mie;
   vec3 rayleigh = scattering(atmosphere, r, mu, mu_s, nu, ground, mie);
-  return with_phases(atmosphere, rayleigh, mie, nu);
+  float t_ground_near, t_ground_far;
+  float t_end = ground && ray_sphere(camera, dir, atmosphere.bottom_radius, t_ground_near,
+                                     t_ground_far) ? t_ground_near : 3.0e38;
+  return with_phases(atmosphere, rayleigh, mie, nu) *
+         eclipse_share_along(atmosphere, camera, dir, t_end);
 }
 
 // Bruneton 2017, GetSkyRadianceToPoint: the light scattered toward the
@@ -163,7 +218,8 @@ vec3 ground_radiance_at(Atmosphere atmosphere, vec3 p) {
   float r = length(p);
   float mu_s = clamp_cosine(dot(p, u_sun_dir) / r);
   vec3 sun = atmosphere.solar_irradiance *
-             bruneton_transmittance_to_sun(atmosphere, u_transmittance, r, mu_s) * max(mu_s, 0.0);
+             bruneton_transmittance_to_sun(atmosphere, u_transmittance, r, mu_s) * max(mu_s, 0.0) *
+             eclipse_share_at(atmosphere, p);
   vec3 sky = bruneton_irradiance(atmosphere, u_irradiance, r, mu_s);
   return atmosphere.ground_albedo / kPi * (sun + sky);
 }
@@ -196,7 +252,7 @@ void main() {
   bool keep = !meets_ground && !in_atmosphere;
 #endif
   if (!keep) discard;
-  radiance = sun_disk_radiance(atmosphere, dot(dir, u_sun_dir));
+  radiance = visible_sun_disk(atmosphere, camera, dir);
 #elif PASS == kAllPass
   // The classes of kClassifyPass, each pixel in its own branch.
   float t_top_near, t_top_far;
@@ -207,22 +263,24 @@ void main() {
     if (depth == 0.0) surface = ground_radiance_at(atmosphere, camera + t_ground_near * dir);
     vec3 in_scatter = sky_radiance_to_point(
         atmosphere, view_to_point(atmosphere, camera, camera + t * dir), transmittance);
+    in_scatter *= eclipse_share_along(atmosphere, camera, dir, t);
     radiance = in_scatter + transmittance * surface;
   } else if (!in_atmosphere) {
-    radiance = sun_disk_radiance(atmosphere, dot(dir, u_sun_dir));
+    radiance = visible_sun_disk(atmosphere, camera, dir);
   } else {
     radiance = sky_radiance(atmosphere, camera, dir, transmittance);
-    radiance += transmittance * sun_disk_radiance(atmosphere, dot(dir, u_sun_dir));
+    radiance += transmittance * visible_sun_disk(atmosphere, camera, dir);
   }
 #elif PASS == kAerialPass || PASS == kHorizonPass
   vec3 surface = pixel.surface;
   if (depth == 0.0) surface = ground_radiance_at(atmosphere, camera + t_ground_near * dir);
   vec3 in_scatter =
       sky_radiance_to_point(atmosphere, view_to_point(atmosphere, camera, camera + t * dir), transmittance);
+  in_scatter *= eclipse_share_along(atmosphere, camera, dir, t);
   radiance = in_scatter + transmittance * surface;
 #else
   radiance = sky_radiance(atmosphere, camera, dir, transmittance);
-  radiance += transmittance * sun_disk_radiance(atmosphere, dot(dir, u_sun_dir));
+  radiance += transmittance * visible_sun_disk(atmosphere, camera, dir);
 #endif
   // Within half-float range, so that a 16-bit target cannot overflow.
   o_radiance = vec4(min(radiance, vec3(6.0e4)), 1.0);

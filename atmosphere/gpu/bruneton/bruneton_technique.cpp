@@ -597,6 +597,8 @@ void BrunetonTechnique::set_frame_uniforms(const SkyFrame& frame) {
                        glm::value_ptr(frame.atmo_ray_from_ndc));
     glUniform3fv(p->uniform("u_sun_dir"), 1, glm::value_ptr(frame.sun_dir_atmo));
     glUniform1f(p->uniform("u_near"), frame.near);
+    glUniform4f(p->uniform("u_moon"), frame.moon_centre_atmo.x, frame.moon_centre_atmo.y,
+                frame.moon_centre_atmo.z, frame.moon_radius);
   }
 }
 

@@ -175,8 +175,11 @@ void march(vec3 camera, vec3 dir, float t_max, bool with_ground, out vec3 lumina
   luminance *= atmosphere.solar_irradiance;
 }
 
-vec3 sun_disk(vec3 dir, vec3 transmittance) {
+// The sun's disk seen from camera along dir, but where the Moon hides it
+// (as raymarch's).
+vec3 sun_disk(vec3 camera, vec3 dir, vec3 transmittance) {
   Atmosphere atmosphere = block_atmosphere();
+  if (moon_hides_sun(camera, dir, u_moon.xyz, u_moon.w)) return vec3(0.0);
   return transmittance * sun_disk_radiance(atmosphere, dot(dir, u_sun_dir));
 }
 
@@ -287,7 +290,7 @@ void main() {
 #ifndef NO_SUN_DISK
       if (open_sky) {
         float mu = dot(camera, dir) / length(camera);
-        lut_radiance += sun_disk(dir, transmittance_lookup(atmosphere, u_camera_r, mu));
+        lut_radiance += sun_disk(camera, dir, transmittance_lookup(atmosphere, u_camera_r, mu));
       }
 #endif
     }
@@ -296,7 +299,7 @@ void main() {
 
   vec3 march_radiance = march_luminance + march_transmittance * surface;
 #ifndef NO_SUN_DISK
-  if (open_sky) march_radiance += sun_disk(dir, march_transmittance);
+  if (open_sky) march_radiance += sun_disk(camera, dir, march_transmittance);
 #endif
 
   vec3 radiance = mix(march_radiance, lut_radiance, u_lut_weight);

@@ -503,6 +503,8 @@ void HillaireTechnique::begin_space(const Program& program, const FrameState& s)
                      glm::value_ptr(frame.atmo_ray_from_ndc));
   glUniform3fv(program.uniform("u_sun_dir"), 1, glm::value_ptr(frame.sun_dir_atmo));
   glUniform1f(program.uniform("u_near"), frame.near);
+  glUniform4f(program.uniform("u_moon"), frame.moon_centre_atmo.x, frame.moon_centre_atmo.y,
+              frame.moon_centre_atmo.z, frame.moon_radius);
 }
 
 // The bands around the shaded rectangle (below, above, left, right)

@@ -15,5 +15,5 @@ void main() {
   Atmosphere atmosphere = block_atmosphere();
   OneilPixel p = oneil_pixel(atmosphere, gl_FragCoord.xy);
   if (p.t_surface < kFar || p.hits_ground) discard;
-  o_radiance = oneil_output(sun_disk_radiance(atmosphere, dot(p.dir, u_sun_dir)));
+  o_radiance = oneil_output(oneil_sun_disk(atmosphere, p.camera, p.dir));
 }

@@ -5,6 +5,16 @@
 // interpolation cannot serve evaluates for itself.
 #include "atmosphere/shaders/atmosphere_block.glsl"
 #include "atmosphere/shaders/oneil_definitions.glsl"
+
+// The Moon's centre (atmosphere space) and radius; none while the radius
+// is 0 (SkyFrame). Each sample of the single scattering takes the sun's
+// visible share there, as raymarch's does.
+uniform vec4 u_moon;
+Real3 eclipse_sun_share(IN(Real3) p, IN(Real3) sun_dir) {
+  if (u_moon.w <= 0.0) return Real3(1.0);
+  return occluded_sun_fraction(sun_dir, block_atmosphere().sun_angular_radius, u_moon.xyz - p,
+                               u_moon.w);
+}
 #include "atmosphere/shaders/oneil_functions.glsl"
 #include "atmosphere/gpu/lifted_horizon.glsl"
 
@@ -101,14 +111,20 @@ OneilPixel oneil_pixel(Atmosphere atmosphere, vec2 frag_coord) {
   return p;
 }
 
+// The light leaving the bottom sphere at p, lit by the share of the sun
+// the Moon leaves there.
+vec3 oneil_sphere_radiance(Atmosphere atmosphere, vec3 p) {
+  return atmosphere.solar_irradiance * ground_radiance(atmosphere, p, u_sun_dir) *
+         eclipse_sun_share(p, u_sun_dir);
+}
+
 // The radiance leaving what the pixel's ray meets: the drawn surface, or
 // where none was drawn (the mesh's flat facets sag below the true
 // ellipsoid near the horizon) the bottom sphere itself, Lambertian with the
 // model's albedo.
 vec3 oneil_surface(Atmosphere atmosphere, OneilPixel p) {
   if (p.t_surface < kFar) return texelFetch(u_surface, p.pixel, 0).rgb;
-  return atmosphere.solar_irradiance *
-         ground_radiance(atmosphere, p.camera + p.t_ground * p.dir, u_sun_dir);
+  return oneil_sphere_radiance(atmosphere, p.camera + p.t_ground * p.dir);
 }
 
 // The light along the ray camera + t dir (unit dir) up to t_surface, the
@@ -141,6 +157,12 @@ void oneil_ray(Atmosphere atmosphere, vec3 camera, vec3 dir, float t_surface, in
 vec3 oneil_phased(Atmosphere atmosphere, vec3 rayleigh, vec3 mie, vec3 dir) {
   float nu = dot(dir, u_sun_dir);
   return rayleigh * rayleigh_phase(nu) + mie * mie_phase(atmosphere, nu);
+}
+
+// The sun's disk seen from camera along dir, but where the Moon hides it.
+vec3 oneil_sun_disk(Atmosphere atmosphere, vec3 camera, vec3 dir) {
+  if (moon_hides_sun(camera, dir, u_moon.xyz, u_moon.w)) return vec3(0.0);
+  return sun_disk_radiance(atmosphere, dot(dir, u_sun_dir));
 }
 
 uniform float u_exposure;

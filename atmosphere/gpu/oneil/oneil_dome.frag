@@ -14,10 +14,11 @@ void main() {
   Atmosphere atmosphere = block_atmosphere();
   // A ray below a lifted camera's horizon is the sky just above it
   // (lifted_horizon.glsl), phases included.
+  vec3 camera = oneil_camera(atmosphere);
   vec3 dir = over_the_lifted_horizon(
-      atmosphere, oneil_camera(atmosphere), length(u_camera),
+      atmosphere, camera, length(u_camera),
       normalize(ray_at_ndc(gl_FragCoord.xy / u_viewport * 2.0 - 1.0)));
   vec3 radiance = oneil_phased(atmosphere, v_rayleigh, v_mie, dir) +
-                  v_transmittance * sun_disk_radiance(atmosphere, dot(dir, u_sun_dir));
+                  v_transmittance * oneil_sun_disk(atmosphere, camera, dir);
   o_radiance = oneil_output(radiance);
 }

@@ -43,9 +43,8 @@ void main() {
   float distance = t_surface == kFar ? t_ground : t_surface;
   v_inverse_distance = v_sky > 0.0 ? 0.0 : 1.0 / distance;
   v_on_sphere = ground ? 1.0 : 0.0;
-  v_sphere_radiance = ground ? atmosphere.solar_irradiance *
-                                   ground_radiance(atmosphere, camera + t_ground * dir, u_sun_dir)
-                             : vec3(0.0);
+  v_sphere_radiance =
+      ground ? oneil_sphere_radiance(atmosphere, camera + t_ground * dir) : vec3(0.0);
   // A vertex over open sky serves no pixel (every triangle with one sends
   // its pixels to their own rays): no samples, so that a batch of them in
   // the vertex shader's SIMD leaves the loop at once.

@@ -231,6 +231,8 @@ void OneilTechnique::set_frame_uniforms(const Program& p, const SkyFrame& frame)
   glUniform1f(p.uniform("u_near"), frame.near);
   glUniform2f(p.uniform("u_viewport"), float(frame.width), float(frame.height));
   glUniform1f(p.uniform("u_exposure"), frame.exposure);
+  glUniform4f(p.uniform("u_moon"), frame.moon_centre_atmo.x, frame.moon_centre_atmo.y,
+              frame.moon_centre_atmo.z, frame.moon_radius);
   set_scale_uniforms(p, rayleigh_, mie_);
 }
 

@@ -26,6 +26,11 @@ uniform vec3 u_atmo_scale;
 uniform vec3 u_camera_atmo;
 uniform vec3 u_sun_dir_atmo;
 uniform int u_sky_light;  // 0: none (single scattering), 1: u_sky_irradiance, 2: an estimate
+// The Moon before the sun (an eclipse): its centre less the eye, body
+// frame, and its radius, metres; none while the radius is 0. And the
+// sun's angular radius, radians.
+uniform vec4 u_moon_rel_eye;
+uniform float u_sun_angular_radius;
 layout(binding = 15) uniform sampler2D u_sky_irradiance;
 
 out vec3 v_normal_body;
@@ -94,6 +99,15 @@ void main() {
       v_sky_irradiance =
           surface_sky_irradiance_estimate(p, a_normal, u_sun_dir_atmo, v_sun_transmittance);
     }
+  }
+  // In an eclipse the sun's light on the ground, direct and glint, is the
+  // visible share of its disk here (occluded_sun.glsl; the umbra is 200 km
+  // wide, the penumbra thousands: a vertex's share serves its triangle).
+  // The sky's light stays the technique's, and the estimate above is taken
+  // before it, from the air's loss of the whole sun.
+  if (u_moon_rel_eye.w > 0.0) {
+    v_sun_transmittance *= occluded_sun_fraction(u_sun_dir_body, u_sun_angular_radius,
+                                                 u_moon_rel_eye.xyz - rel_eye, u_moon_rel_eye.w);
   }
 #endif
 }
