@@ -103,11 +103,33 @@ void main() {
   // In an eclipse the sun's light on the ground, direct and glint, is the
   // visible share of its disk here (occluded_sun.glsl; the umbra is 200 km
   // wide, the penumbra thousands: a vertex's share serves its triangle).
-  // The sky's light stays the technique's, and the estimate above is taken
-  // before it, from the air's loss of the whole sun.
+  // The estimate above is taken before it, from the air's loss of the
+  // whole sun.
   if (u_moon_rel_eye.w > 0.0) {
     v_sun_transmittance *= occluded_sun_fraction(u_sun_dir_body, u_sun_angular_radius,
                                                  u_moon_rel_eye.xyz - rel_eye, u_moon_rel_eye.w);
+    // The sky's light here comes from the air around and above it, lit by
+    // the share of the sun there: the technique's table (which knows one
+    // sun for the whole sky) times the mean share at the point a scale
+    // height (8 km) above and at six points 40 km around that (the sky's
+    // irradiance comes mostly from elevations over 15 degrees). In the
+    // partial phase, whose share changes over thousands of kilometres,
+    // that is the share here; deep in the umbra, no sky light, where the
+    // ground truth's is a hundredth of the partial phase's at a tenth of
+    // the sun.
+    vec3 up = normalize(u_center_body + a_offset);
+    vec3 east = normalize(cross(abs(up.z) < 0.9 ? vec3(0.0, 0.0, 1.0) : vec3(1.0, 0.0, 0.0), up));
+    vec3 north = cross(up, east);
+    vec3 above = rel_eye + 8000.0 * up;
+    vec3 sky_share = occluded_sun_fraction(u_sun_dir_body, u_sun_angular_radius,
+                                           u_moon_rel_eye.xyz - above, u_moon_rel_eye.w);
+    for (int k = 0; k < 6; ++k) {
+      float a = float(k) * 1.0471976;  // pi / 3
+      vec3 around = above + 40000.0 * (cos(a) * east + sin(a) * north);
+      sky_share += occluded_sun_fraction(u_sun_dir_body, u_sun_angular_radius,
+                                         u_moon_rel_eye.xyz - around, u_moon_rel_eye.w);
+    }
+    v_sky_irradiance *= sky_share / 7.0;
   }
 #endif
 }
