@@ -146,7 +146,29 @@ struct FrameRenderer::Frame {
   // With a sky: atmosphere space (atmosphere_space.h).
   glm::dvec3 atmo_scale{1.0}, camera_atmo{0.0};
   glm::vec3 sun_dir_atmo{0, 0, 1};
+  // The Moon's radius for this frame's passes: 0 where it covers no part
+  // of the sun from anywhere the frame draws (eclipsing_moon_radius).
+  double moon_radius = 0;
 };
+
+double FrameRenderer::eclipsing_moon_radius(const Frame& f) const {
+  if (moon_radius_ <= 0.0) return 0.0;
+  // Every point the frame draws (the camera, the air, the ground) lies
+  // within `reach` of the body's centre: from there the Moon stands at
+  // most asin(reach / d) from where the centre sees it, and the sun
+  // reach / 1 AU. Near the Moon, keep it.
+  const double moon_distance = glm::length(moon_pos_body_);
+  double top = body_.shape.equatorial_radius;
+  if (atmosphere_) top *= atmosphere_->top_radius / atmosphere_->bottom_radius;
+  const double reach = std::max(glm::length(f.camera.pos_body), top);
+  if (reach >= 0.5 * moon_distance) return moon_radius_;
+  const double sun_radius = atmosphere_ ? atmosphere_->sun_angular_radius : 0.0;
+  const double cos_separation = glm::dot(moon_pos_body_ / moon_distance, f.sun_dir_body);
+  const double separation = std::acos(std::clamp(cos_separation, -1.0, 1.0));
+  const double within = sun_radius + std::asin(moon_radius_ / (moon_distance - reach)) +
+                        std::asin(reach / moon_distance) + reach / 1.495978707e11 + 1e-3;
+  return separation <= within ? moon_radius_ : 0.0;
+}
 
 void FrameRenderer::set_options(const FrameOptions& options) {
   SurfaceAntialiasing::check_samples(options.antialiasing);
@@ -186,6 +208,7 @@ FrameStats FrameRenderer::render(const Camera& camera, const glm::dvec3& sun_dir
     f.camera_atmo = f.atmo_scale * camera.pos_body;
     f.sun_dir_atmo = glm::vec3(glm::normalize(f.atmo_scale * sun_dir_body));
   }
+  f.moon_radius = eclipsing_moon_radius(f);
   exposure_ = exposure;
   exposure_measured_ = options_.auto_exposure && !f.display_values;
   graph_.run(passes(f), timer_);
@@ -358,7 +381,7 @@ void FrameRenderer::draw_surfaces(const Frame& f, const AtmosphereTechnique* tec
   }
   lighting.shadows = options_.terrain_shadows;
   lighting.moon_pos_body = moon_pos_body_;
-  lighting.moon_radius = moon_radius_;
+  lighting.moon_radius = f.moon_radius;
   // Bound even for an airless body (then all zero): the block is declared.
   glBindBufferBase(GL_UNIFORM_BUFFER, kAtmosphereBlockBinding, atmosphere_block_.id());
   terrain_stats_ = terrain_->draw(f.camera, width_, height_, lighting, coverage);
@@ -427,7 +450,7 @@ void FrameRenderer::draw_atmosphere(const Frame& f, AtmosphereTechnique& techniq
   // Carried into atmosphere space as every point is (lab/scene.cpp's
   // reference_view does the same for the ground truth).
   sky.moon_centre_atmo = glm::vec3(scale * moon_pos_body_);
-  sky.moon_radius = float(scale.x * moon_radius_);
+  sky.moon_radius = float(scale.x * f.moon_radius);
   sky.near = float(f.camera.near);
   // A lower bound of every distance the technique meets in front of a
   // surface: the nearest drawn tile, less the depth of the lowest ground

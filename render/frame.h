@@ -134,7 +134,8 @@ class FrameRenderer {
 
   // Another technique for the body's atmosphere, taken as it is (the caller
   // has given it the current model); returns the one it replaces.
-  std::unique_ptr<AtmosphereTechnique> swap_technique(std::unique_ptr<AtmosphereTechnique> technique);
+  std::unique_ptr<AtmosphereTechnique> swap_technique(
+      std::unique_ptr<AtmosphereTechnique> technique);
   AtmosphereTechnique* technique() const { return technique_.get(); }
   // While a switch of technique fades: `previous` draws each frame too
   // (surfaces and atmosphere, as it would alone), and its image is laid
@@ -180,6 +181,10 @@ class FrameRenderer {
   std::vector<Pass> image_passes(const Frame& f);
 
   void draw_surfaces(const Frame& f, const AtmosphereTechnique* technique);
+  // The Moon's radius if it may cover part of the sun from some point the
+  // frame draws, else 0: a frame far from an eclipse then pays nothing
+  // for the Moon, and the techniques keep their reuse of passes.
+  double eclipsing_moon_radius(const Frame& f) const;
   void draw_atmosphere(const Frame& f, AtmosphereTechnique& technique);
   // Whether the frame's clouds pass runs (and dims the stars).
   bool clouds_drawn(const Frame& f) const;
