@@ -19,8 +19,13 @@ namespace {
 
 // The terrain's shadow in the air: light shafts, shadowed haze.
 const QualityParameter kTerrainShadowsParameter = {
-    "terrain_shadows", "the terrain's shadow in the air (light shafts, shadowed haze)", 0, 1, 1,
-    true, {"off", "on"}};
+    "terrain_shadows",
+    "the terrain's shadow in the air (light shafts, shadowed haze)",
+    0,
+    1,
+    1,
+    true,
+    {"off", "on"}};
 
 std::vector<QualityParameter> hillaire_quality() {
   return {
@@ -123,133 +128,154 @@ std::unique_ptr<AtmosphereTechnique> make_oneil(const TechniqueChoice& c) {
   return std::make_unique<OneilTechnique>(s);
 }
 
-std::vector<TechniqueEntry> make_registry() {
+TechniqueEntry raymarch_entry() {
   return {
-      {"raymarch",
-       "Nishita et al. 1993",
-       "single scattering by a nested ray march per pixel: the brute-force baseline",
-       {{"view_steps", "march steps along each pixel's ray", 1, 512, 32, true, {}},
-        {"light_steps", "march steps toward the sun at each of them", 1, 256, 16, true, {}},
-        kTerrainShadowsParameter},
-       {{"cheap", "view_steps=8,light_steps=4"},
-        {"default", ""},
-        {"fine", "view_steps=128,light_steps=64"}},
-       "",
-       "yes: the share at each sample of its march and on the ground; the disk hidden (exact for "
-       "single scattering)",
-       kNoSecondLight,
-       [](const TechniqueChoice& c) {
-         return std::make_unique<RaymarchTechnique>(RaymarchTechnique::Steps{
-             c.integer("view_steps"), c.integer("light_steps"), c.integer("terrain_shadows") == 1});
-       }},
-      {"hillaire", "ours, on Hillaire 2020's tables",
-       "transmittance, multiple-scattering (six orders to spherical-harmonic degree 4 and a "
-       "forward-gain LUT), sky-view and aerial-perspective LUTs; a per-pixel march high up",
-       hillaire_quality(), kHillaireQualityPoints, "multiple=off", kHillaireMoonShadow,
-       kNoSecondLight,
-       [](const TechniqueChoice& c) {
-         return make_hillaire(c, HillaireTechnique::MultipleScattering::kOrders);
-       }},
-      {"bruneton",
-       "Bruneton and Neyret 2008, as Bruneton reworked it in 2017",
-       "transmittance, 4D single and multiple scattering and ground irradiance tables, the orders "
-       "iterated on the GPU when the model changes and kept on disk",
-       {{"r_size", "scattering table: altitudes", 4, 128, 32, true, {}},
-        {"mu_size", "scattering table: view zenith cosines (even)", 4, 512, 256, true, {}},
-        {"mu_s_size", "scattering table: sun zenith cosines", 4, 128, 64, true, {}},
-        {"nu_size", "scattering table: view-sun cosines", 2, 64, 8, true, {}},
-        {"transmittance_width",
-         "transmittance table: view zenith cosines",
-         16,
-         2048,
-         256,
-         true,
-         {}},
-        {"transmittance_height", "transmittance table: altitudes", 4, 1024, 64, true, {}},
-        {"irradiance_width", "ground irradiance table: sun zenith cosines", 4, 1024, 64, true, {}},
-        {"irradiance_height", "ground irradiance table: altitudes", 2, 256, 16, true, {}},
-        {"orders", "orders of scattering iterated", 1, 50, 4, true, {}},
-        {"floats", "the scattering tables' floats", 0, 1, 0, true, {"full", "half"}},
-        {"textures",
-         "single Mie in its own table, or its red in the scattering's alpha",
-         0,
-         1,
-         0,
-         true,
-         {"separate", "combined"}},
-        {"integration_steps",
-         "steps along each ray of single and multiple scattering",
-         4,
-         500,
-         50,
-         true,
-         {}},
-        {"sphere_samples", "zenith angles of the gathers over the sphere", 4, 64, 16, true, {}},
-        {"transmittance_steps",
-         "quadrature steps of each transmittance texel",
-         8,
-         1000,
-         100,
-         true,
-         {}},
-        {"tail",
-         "the orders past the last: left out (Bruneton's), or a geometric series",
-         0,
-         1,
-         1,
-         true,
-         {"none", "geometric"}}},
-       {{"cheap", "r_size=16,mu_size=64,mu_s_size=16,nu_size=4,orders=2,floats=half"},
-        // Bruneton's own 2017 defaults.
-        {"bruneton2017",
-         "mu_size=128,mu_s_size=32,floats=half,textures=combined,tail=none,integration_steps=50"},
-        {"default", ""},
-        {"fine", "nu_size=16,orders=8,sphere_samples=24"}},
-       // One order: no tail (it needs three), no sky light on the ground.
-       "orders=1",
-       "yes, one share per view ray: the mean along it, weighted as its single scattering, for "
-       "every order; the ground's sun at its point; the disk hidden",
-       kNoSecondLight,
-       make_bruneton},
-      {"oneil",
-       "O'Neil 2005 (GPU Gems 2, ch. 16)",
-       "single scattering per vertex of a sky dome and of a screen-space grid over the surfaces, "
-       "the optical depths from a scale function fitted to the body's scale heights",
-       // 8 samples: on earth_noon, 5 (the chapter's) left the sky 8-10 % (relative RMSE)
-       // off single scattering by the fine ray march, 8 left 3-5 %, 10 2-4 %, of which
-       // ozone, which O'Neil's model has not, is about 2 % in green.
-       {{"samples", "samples along each vertex's ray", 2, 16, 8, true, {}},
-        {"dome", "the sky dome's rings (twice as many segments around)", 4, 256, 48, true, {}},
-        {"cell", "pixels between the vertices of the surfaces' grid", 1, 64, 8, true, {}},
-        {"scale",
-         "the scale function: fitted to the body, or the chapter's polynomial",
-         0,
-         1,
-         0,
-         true,
-         {"fitted", "chapter"}},
-        {"exposure",
-         "radiance for the frame's tone map, or the chapter's 1 - exp(-exposure L) display values",
-         0,
-         1,
-         0,
-         true,
-         {"tone_map", "chapter"}}},
-       {{"cheap", "samples=4,dome=24,cell=16"},
-        {"chapter", "samples=5,scale=chapter"},
-        {"default", ""},
-        {"fine", "samples=16,dome=96,cell=4"}},
-       "",
-       "yes: the share at each sample of its single scattering and on the ground; the disk hidden",
-       kNoSecondLight,
-       make_oneil},
-      {"hillaire2020", "Hillaire 2020",
-       "the paper's LUTs, with its multiple scattering Psi = L2 / (1 - f_ms)", hillaire_quality(),
-       kHillaireQualityPoints, "multiple=off", kHillaireMoonShadow, kNoSecondLight,
-       [](const TechniqueChoice& c) {
-         return make_hillaire(c, HillaireTechnique::MultipleScattering::kPaper);
-       }},
-  };
+      "raymarch",
+      "Nishita et al. 1993",
+      "single scattering by a nested ray march per pixel: the brute-force baseline",
+      {{"view_steps", "march steps along each pixel's ray", 1, 512, 32, true, {}},
+       {"light_steps", "march steps toward the sun at each of them", 1, 256, 16, true, {}},
+       kTerrainShadowsParameter},
+      {{"cheap", "view_steps=8,light_steps=4"},
+       {"default", ""},
+       {"fine", "view_steps=128,light_steps=64"}},
+      "",
+      "yes: the share at each sample of its march and on the ground; the disk hidden (exact for "
+      "single scattering)",
+      kNoSecondLight,
+      [](const TechniqueChoice& c) {
+        return std::make_unique<RaymarchTechnique>(RaymarchTechnique::Steps{
+            c.integer("view_steps"), c.integer("light_steps"), c.integer("terrain_shadows") == 1});
+      }};
+}
+
+TechniqueEntry hillaire_entry() {
+  return {"hillaire",
+          "ours, on Hillaire 2020's tables",
+          "transmittance, multiple-scattering (six orders to spherical-harmonic degree 4 and a "
+          "forward-gain LUT), sky-view and aerial-perspective LUTs; a per-pixel march high up",
+          hillaire_quality(),
+          kHillaireQualityPoints,
+          "multiple=off",
+          kHillaireMoonShadow,
+          kNoSecondLight,
+          [](const TechniqueChoice& c) {
+            return make_hillaire(c, HillaireTechnique::MultipleScattering::kOrders);
+          }};
+}
+
+TechniqueEntry bruneton_entry() {
+  return {
+      "bruneton",
+      "Bruneton and Neyret 2008, as Bruneton reworked it in 2017",
+      "transmittance, 4D single and multiple scattering and ground irradiance tables, the orders "
+      "iterated on the GPU when the model changes and kept on disk",
+      {{"r_size", "scattering table: altitudes", 4, 128, 32, true, {}},
+       {"mu_size", "scattering table: view zenith cosines (even)", 4, 512, 256, true, {}},
+       {"mu_s_size", "scattering table: sun zenith cosines", 4, 128, 64, true, {}},
+       {"nu_size", "scattering table: view-sun cosines", 2, 64, 8, true, {}},
+       {"transmittance_width", "transmittance table: view zenith cosines", 16, 2048, 256, true, {}},
+       {"transmittance_height", "transmittance table: altitudes", 4, 1024, 64, true, {}},
+       {"irradiance_width", "ground irradiance table: sun zenith cosines", 4, 1024, 64, true, {}},
+       {"irradiance_height", "ground irradiance table: altitudes", 2, 256, 16, true, {}},
+       {"orders", "orders of scattering iterated", 1, 50, 4, true, {}},
+       {"floats", "the scattering tables' floats", 0, 1, 0, true, {"full", "half"}},
+       {"textures",
+        "single Mie in its own table, or its red in the scattering's alpha",
+        0,
+        1,
+        0,
+        true,
+        {"separate", "combined"}},
+       {"integration_steps",
+        "steps along each ray of single and multiple scattering",
+        4,
+        500,
+        50,
+        true,
+        {}},
+       {"sphere_samples", "zenith angles of the gathers over the sphere", 4, 64, 16, true, {}},
+       {"transmittance_steps",
+        "quadrature steps of each transmittance texel",
+        8,
+        1000,
+        100,
+        true,
+        {}},
+       {"tail",
+        "the orders past the last: left out (Bruneton's), or a geometric series",
+        0,
+        1,
+        1,
+        true,
+        {"none", "geometric"}}},
+      {{"cheap", "r_size=16,mu_size=64,mu_s_size=16,nu_size=4,orders=2,floats=half"},
+       // Bruneton's own 2017 defaults.
+       {"bruneton2017",
+        "mu_size=128,mu_s_size=32,floats=half,textures=combined,tail=none,integration_steps=50"},
+       {"default", ""},
+       {"fine", "nu_size=16,orders=8,sphere_samples=24"}},
+      // One order: no tail (it needs three), no sky light on the ground.
+      "orders=1",
+      "yes, one share per view ray: the mean along it, weighted as its single scattering, for "
+      "every order; the ground's sun at its point; the disk hidden",
+      kNoSecondLight,
+      make_bruneton};
+}
+
+TechniqueEntry oneil_entry() {
+  return {
+      "oneil",
+      "O'Neil 2005 (GPU Gems 2, ch. 16)",
+      "single scattering per vertex of a sky dome and of a screen-space grid over the surfaces, "
+      "the optical depths from a scale function fitted to the body's scale heights",
+      // 8 samples: on earth_noon, 5 (the chapter's) left the sky 8-10 % (relative RMSE)
+      // off single scattering by the fine ray march, 8 left 3-5 %, 10 2-4 %, of which
+      // ozone, which O'Neil's model has not, is about 2 % in green.
+      {{"samples", "samples along each vertex's ray", 2, 16, 8, true, {}},
+       {"dome", "the sky dome's rings (twice as many segments around)", 4, 256, 48, true, {}},
+       {"cell", "pixels between the vertices of the surfaces' grid", 1, 64, 8, true, {}},
+       {"scale",
+        "the scale function: fitted to the body, or the chapter's polynomial",
+        0,
+        1,
+        0,
+        true,
+        {"fitted", "chapter"}},
+       {"exposure",
+        "radiance for the frame's tone map, or the chapter's 1 - exp(-exposure L) display values",
+        0,
+        1,
+        0,
+        true,
+        {"tone_map", "chapter"}}},
+      {{"cheap", "samples=4,dome=24,cell=16"},
+       {"chapter", "samples=5,scale=chapter"},
+       {"default", ""},
+       {"fine", "samples=16,dome=96,cell=4"}},
+      "",
+      "yes: the share at each sample of its single scattering and on the ground; the disk hidden",
+      kNoSecondLight,
+      make_oneil};
+}
+
+TechniqueEntry hillaire2020_entry() {
+  return {"hillaire2020",
+          "Hillaire 2020",
+          "the paper's LUTs, with its multiple scattering Psi = L2 / (1 - f_ms)",
+          hillaire_quality(),
+          kHillaireQualityPoints,
+          "multiple=off",
+          kHillaireMoonShadow,
+          kNoSecondLight,
+          [](const TechniqueChoice& c) {
+            return make_hillaire(c, HillaireTechnique::MultipleScattering::kPaper);
+          }};
+}
+
+std::vector<TechniqueEntry> make_registry() {
+  return {raymarch_entry(), hillaire_entry(), bruneton_entry(), oneil_entry(),
+          hillaire2020_entry()};
 }
 
 std::string format_value(const QualityParameter& p, double v) {
@@ -353,10 +379,10 @@ TechniqueChoice parse_technique(const std::string& text) {
       if (eq == std::string::npos && point != t.quality_points.end()) {
         if (!point->second.empty()) self(point->second, self);
       } else if (eq == std::string::npos || eq == 0) {
-        throw InputError(fmt::format("{}: '{}' is not key=value nor a quality point (its keys: {}; "
-                                     "its points: {})",
-                                     t.name, item, fmt::join(keys_of(choice.values), ", "),
-                                     fmt::join(point_names, ", ")));
+        throw InputError(fmt::format(
+            "{}: '{}' is not key=value nor a quality point (its keys: {}; "
+            "its points: {})",
+            t.name, item, fmt::join(keys_of(choice.values), ", "), fmt::join(point_names, ", ")));
       } else {
         std::string key = item.substr(0, eq);
         auto it = std::find_if(t.quality.begin(), t.quality.end(),
@@ -398,7 +424,8 @@ uintmax_t disk_table_bytes(const TechniqueChoice& choice) {
 std::string describe_techniques() {
   std::string out =
       "Atmosphere techniques: pick one as NAME, NAME:KEY=VALUE,... or NAME:POINT[,KEY=VALUE...] "
-      "(e.g. hillaire:per_pixel_steps=20, bruneton:cheap) on the command line or in a flight script's \"technique\".\n";
+      "(e.g. hillaire:per_pixel_steps=20, bruneton:cheap) on the command line or in a flight "
+      "script's \"technique\".\n";
   for (const auto& t : technique_registry()) {
     out += fmt::format("\n{} ({}): {}\n", t.name, t.source, t.summary);
     for (const auto& p : t.quality) {
@@ -411,8 +438,9 @@ std::string describe_techniques() {
     std::vector<std::string> points;
     for (const auto& [name, settings] : t.quality_points) points.push_back(name);
     out += fmt::format("  quality points for the lab: {}\n", fmt::join(points, ", "));
-    out += fmt::format("  single scattering alone (the lab's split by order): {}\n",
-                       t.single_scattering.empty() ? "as it is" : t.name + ":" + t.single_scattering);
+    out +=
+        fmt::format("  single scattering alone (the lab's split by order): {}\n",
+                    t.single_scattering.empty() ? "as it is" : t.name + ":" + t.single_scattering);
     out += fmt::format("  the Moon's shadow (the occluded sun): {}\n", t.moon_shadow);
     out += fmt::format("  a second light (the Moon's): {}\n", t.second_light);
   }
