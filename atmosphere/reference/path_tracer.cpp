@@ -222,6 +222,55 @@ double sun_along_segment(const DepthTable& table, const glm::dvec3& start, const
 
 }  // namespace
 
+namespace {
+
+// The direction a path goes on in after scattering at a point of
+// coefficients `co`, coming along `dir`; `weight` takes the phase over the
+// sampling's pdf where they differ (the first turn's sunward lobe).
+glm::dvec3 scatter_direction(const Medium& m, const Medium::Coefficients& co, const glm::dvec3& dir,
+                             const glm::dvec3& sun_dir, bool first_turn, glm::dvec2 turn, Rng& rng,
+                             double& weight) {
+  // The next direction, exactly from the phase function (Rayleigh, or
+  // Cornette-Shanks by rejection from Henyey-Greenstein, the first try
+  // stratified), so that the weight does not change. At the first
+  // turn only, a share comes from a Henyey-Greenstein lobe about the
+  // sun, where the glow of dust is, and the weight is the phase over
+  // the mixture's pdf (one-sample multiple importance sampling, balance
+  // heuristic). At later turns such ratios would multiply, and their
+  // spread with them: in dense dust paths turn hundreds of times.
+  double g = m.mie_g;
+  double sunward = first_turn ? kSunward : 0.0;
+  double rayleigh_share = (1.0 - sunward) * co.scattering_rayleigh / co.scattering();
+  glm::dvec3 next;
+  double x = turn.x;
+  if (x < sunward) {
+    next =
+        reference::direction_about(sun_dir, reference::sample_henyey_greenstein_mu(g, x / sunward),
+                                   2.0 * reference::kPi * turn.y);
+  } else if (x < sunward + rayleigh_share) {
+    next = reference::direction_about(dir,
+                                      reference::sample_rayleigh_mu((x - sunward) / rayleigh_share),
+                                      2.0 * reference::kPi * turn.y);
+  } else {
+    double first = std::min((x - sunward - rayleigh_share) / (1.0 - sunward - rayleigh_share), 1.0);
+    double mu = m.mie_phase == MiePhase::kHenyeyGreenstein
+                    ? reference::sample_henyey_greenstein_mu(g, first)
+                    : reference::sample_cornette_shanks_mu(g, first, rng);
+    next = reference::direction_about(dir, mu, 2.0 * reference::kPi * turn.y);
+  }
+  if (sunward > 0.0) {
+    double mu = glm::dot(dir, next);
+    double phase = (co.scattering_rayleigh * shared::rayleigh_phase(mu) +
+                    co.scattering_mie * m.mie_phase_value(mu)) /
+                   co.scattering();
+    weight *= phase / (sunward * shared::henyey_greenstein_phase(g, glm::dot(next, sun_dir)) +
+                       (1.0 - sunward) * phase);
+  }
+  return next;
+}
+
+}  // namespace
+
 double trace_path(const DepthTable& table, glm::dvec3 origin, glm::dvec3 dir,
                   const glm::dvec3& sun_dir, const TraceOptions& options,
                   reference::PathSampler& sampler) {
@@ -302,44 +351,7 @@ double trace_path(const DepthTable& table, glm::dvec3 origin, glm::dvec3 dir,
       Medium::Coefficients co = m.at(c, altitude_of(m, origin));
       if (co.extinction() <= 0.0) return radiance;
       weight *= co.scattering() / co.extinction();
-      // The next direction, exactly from the phase function (Rayleigh, or
-      // Cornette-Shanks by rejection from Henyey-Greenstein, the first try
-      // stratified), so that the weight does not change. At the first
-      // turn only, a share comes from a Henyey-Greenstein lobe about the
-      // sun, where the glow of dust is, and the weight is the phase over
-      // the mixture's pdf (one-sample multiple importance sampling, balance
-      // heuristic). At later turns such ratios would multiply, and their
-      // spread with them: in dense dust paths turn hundreds of times.
-      double g = m.mie_g;
-      double sunward = order == 1 ? kSunward : 0.0;
-      double rayleigh_share = (1.0 - sunward) * co.scattering_rayleigh / co.scattering();
-      glm::dvec3 next;
-      double x = turn.x;
-      if (x < sunward) {
-        next = reference::direction_about(sun_dir,
-                                          reference::sample_henyey_greenstein_mu(g, x / sunward),
-                                          2.0 * reference::kPi * turn.y);
-      } else if (x < sunward + rayleigh_share) {
-        next = reference::direction_about(
-            dir, reference::sample_rayleigh_mu((x - sunward) / rayleigh_share),
-            2.0 * reference::kPi * turn.y);
-      } else {
-        double first =
-            std::min((x - sunward - rayleigh_share) / (1.0 - sunward - rayleigh_share), 1.0);
-        double mu = m.mie_phase == MiePhase::kHenyeyGreenstein
-                        ? reference::sample_henyey_greenstein_mu(g, first)
-                        : reference::sample_cornette_shanks_mu(g, first, rng);
-        next = reference::direction_about(dir, mu, 2.0 * reference::kPi * turn.y);
-      }
-      if (sunward > 0.0) {
-        double mu = glm::dot(dir, next);
-        double phase = (co.scattering_rayleigh * shared::rayleigh_phase(mu) +
-                        co.scattering_mie * m.mie_phase_value(mu)) /
-                       co.scattering();
-        weight *= phase / (sunward * shared::henyey_greenstein_phase(g, glm::dot(next, sun_dir)) +
-                           (1.0 - sunward) * phase);
-      }
-      dir = next;
+      dir = scatter_direction(m, co, dir, sun_dir, order == 1, turn, rng, weight);
     } else {
       weight *= albedo;
       origin = normal * m.bottom_radius;
